@@ -1,0 +1,24 @@
+# Every dependency comes from Debian's packages (see cmake/deps.sh) and is found here, once.
+find_package(PkgConfig REQUIRED)
+find_package(glm REQUIRED)                       # libglm-dev: vector maths
+pkg_check_modules(NANOFLANN REQUIRED IMPORTED_TARGET nanoflann)   # libnanoflann-dev: kd-tree
+find_package(OpenEXR REQUIRED)                   # libopenexr-dev: .exr maps
+find_package(OpenCV REQUIRED COMPONENTS core imgcodecs)  # libopencv-dev: .hdr and .pfm maps
+find_package(CLI11 REQUIRED)                     # libcli11-dev: argument parsing
+find_package(nlohmann_json REQUIRED)             # nlohmann-json3-dev: JSON output
+find_package(spdlog REQUIRED)                    # libspdlog-dev: logging in the shells
+
+# liquid-dsp (libliquid-dev) ships a static library and a header, without CMake or pkg-config files.
+find_path(LIQUID_INCLUDE_DIR liquid/liquid.h REQUIRED)
+find_library(LIQUID_LIBRARY NAMES liquid REQUIRED)
+add_library(liquid::liquid UNKNOWN IMPORTED)
+set_target_properties(liquid::liquid PROPERTIES IMPORTED_LOCATION "${LIQUID_LIBRARY}"
+                      INTERFACE_INCLUDE_DIRECTORIES "${LIQUID_INCLUDE_DIR}"
+                      INTERFACE_LINK_LIBRARIES m)
+
+if(VEM_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(VEM_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

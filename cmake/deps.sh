@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs vemcast's build and test dependencies from Debian 12's packages, only when missing.
+# Run as root (the README's two commands call it). Safe to run again: installs nothing twice.
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libglm-dev libnanoflann-dev libopenexr-dev libopencv-dev libcli11-dev nlohmann-json3-dev
+  libspdlog-dev libliquid-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "deps.sh: installing ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
