@@ -1,0 +1,13 @@
+// vemtool's subcommands. Each lives in its own <name>_command.cpp and registers itself on the
+// top-level CLI11 app; its callback does the I/O and calls the pure core. A command reports bad
+// input with one clear sentence on stderr and sets a non-zero exit code through `exitCode`.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace vem::tool {
+
+void addLightsCommand(CLI::App& app, int& exitCode);   // lights_command.cpp
+void addFiltersCommand(CLI::App& app, int& exitCode);  // filters_command.cpp
+
+}  // namespace vem::tool
