@@ -1,0 +1,82 @@
+// SamplingTables: the per-frame importance of an environment map and the cumulative tables both
+// samplers invert (paper 004 section 3.1).
+//
+// Importance of a pixel = its Rec. 709 luminance times its solid angle (color.h, env_map.h).
+// NaN, infinite and negative channel values count as 0 (and are counted here so the shell can warn).
+// A grey floor of kFloorFraction times the map's mean luminance is added to every pixel's importance
+// (and, as grey, to its colour) so that the cumulative tables are strictly increasing for any
+// non-negative map: this is what makes the Havran mapping continuous and bijective everywhere, also
+// across black regions. Its effect on the lights' totals is kFloorFraction, relative.
+// An all-black map (no positive luminance anywhere) gets a uniform importance instead, so the lights
+// keep well-defined directions; `black` is set and the light generator then emits rgb exactly 0.
+//
+// Coordinates: row coordinate r in [0, H] (row y spans [y, y + 1]) and column coordinate xc in
+// [0, W] (env_map.h). Within row y the area coordinate s = (1 - cos theta) / (1 - cos theta_max) is
+// linear in r; s is uniform in solid angle: d(omega) = (1 - cos theta_max) ds d(psi).
+// Sums are accumulated and stored in double: a 4096 x 2048 map with a 1e8 sun over a 1e-3 sky needs
+// it (float would lose the sky under the sun in the cumulative sums).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/env_map.h"
+
+namespace vem {
+
+inline constexpr double kFloorFraction = 1e-6;
+
+struct SamplingTables {
+  MapLayout layout = MapLayout::Sphere;
+  int width = 0;
+  int height = 0;
+  // Per row y, the luminance summed over columns [0, x) at index y * (width + 1) + x (no floor).
+  std::vector<double> rowCumulativeY;
+  std::vector<double> pixelSolidAngleSr;  // per row
+  std::vector<double> sEdges;             // height + 1 area coordinates of the row edges
+  std::vector<double> rowMass;            // per row: solid angle x (luminance sum + width x floor)
+  // Marginal over rows for the standard sampler: cumulative rowMass at the row edges (height + 1).
+  std::vector<double> boxCdf;
+  // Marginal for the Havran sampler: rowMass interpolated linearly in r between row centres
+  // (constant in the outer half rows), cumulative at knots r = 0, 0.5, 1.5, ..., H - 0.5, H.
+  std::vector<double> tentCdf;
+  double floorY = 0.0;        // luminance added to every pixel
+  double totalMass = 0.0;     // sum of rowMass = boxCdf.back() = tentCdf.back()
+  double luminanceSr = 0.0;   // integral of the (sanitised) luminance over solid angle, no floor
+  glm::dvec3 rgbSr{0.0};      // integral of the (sanitised) rgb over solid angle, no floor
+  std::size_t badPixels = 0;  // pixels with a NaN, infinite or negative channel
+  bool black = false;
+
+  [[nodiscard]] double cumulativeY(int y, int x) const {
+    return rowCumulativeY[std::size_t(y) * std::size_t(width + 1) + std::size_t(x)];
+  }
+  // Luminance of column x in row y, floor included.
+  [[nodiscard]] double pixelY(int y, int x) const {
+    return cumulativeY(y, x + 1) - cumulativeY(y, x) + floorY;
+  }
+  // Cumulative of row y at column coordinate xc in [0, W], floor included (linear within a pixel).
+  [[nodiscard]] double rowCumulativeAt(int y, double xc) const;
+};
+
+// Builds the tables for `map`. `recycled` lends its storage (pass last frame's tables to avoid
+// allocating every frame); its contents are ignored.
+[[nodiscard]] SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled = {});
+
+// A pixel's rgb with NaN, infinite and negative channels as 0.
+[[nodiscard]] glm::dvec3 sanitizedRgb(const EnvMap& map, int x, int y);
+
+// The row coordinate r in [0, H] of polar angle theta.
+[[nodiscard]] double rowCoordFromTheta(const SamplingTables& tables, double thetaRad);
+// The area coordinate s of row coordinate r, and the unit direction of (r, xc).
+[[nodiscard]] double sFromRowCoord(const SamplingTables& tables, double r);
+[[nodiscard]] glm::dvec3 directionFromMapCoords(const SamplingTables& tables, double r, double xc);
+// The map coordinates (r, xc) of a unit direction (inverse of directionFromMapCoords).
+struct MapCoords {
+  double r = 0.0;
+  double xc = 0.0;
+};
+[[nodiscard]] MapCoords mapCoordsFromDirection(const SamplingTables& tables, glm::dvec3 dir);
+
+}  // namespace vem
