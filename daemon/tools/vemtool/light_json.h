@@ -1,0 +1,21 @@
+// JSON forms of light sets, as `vemtool lights` prints them (docs/lights-format.md):
+//   {"frame":F,"count":N,"lights":[{"id":K,"dir":[x,y,z],"rgb":[r,g,b]},...]}
+// Numbers are the lights' float values written in their shortest round-trip form.
+// A clustered frame adds "clustered_from" (the lights before clustering), "radius_rad" and per
+// cluster "members" (the ids of the lights it holds); its "id" is its seed light's id.
+#pragma once
+
+#include <cstdint>
+
+#include <nlohmann/json.hpp>
+
+#include "core/env_map.h"
+#include "core/light.h"
+
+namespace vem::tool {
+
+[[nodiscard]] nlohmann::json frameJson(const LightSet& lights, std::uint64_t frame);
+[[nodiscard]] nlohmann::json clusteredFrameJson(const LightSet& lights, int clusterQ,
+                                                MapLayout layout, std::uint64_t frame);
+
+}  // namespace vem::tool

@@ -1,0 +1,32 @@
+// vemtool: lights from map files, and the tools around them. A thin shell over the core library:
+// each subcommand (see commands.h) reads its input, calls the core, prints the result.
+#include <cstdlib>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  // Diagnostics go to stderr, one line each; stdout carries only results (JSON).
+  auto logger = spdlog::stderr_color_st("vemtool");
+  logger->set_pattern("vemtool: %^%l%$: %v");
+  spdlog::set_default_logger(logger);
+
+  CLI::App app{"vemtool: directional lights from HDR environment maps, and tools (vemcast)"};
+  app.require_subcommand(1);
+  app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
+    return std::string("vemtool: error: ") + e.what() + " (see '" + failed->get_name() +
+           " --help')\n";
+  });
+  int exitCode = EXIT_SUCCESS;
+  vem::tool::addLightsCommand(app, exitCode);
+  vem::tool::addFiltersCommand(app, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return exitCode;
+}
