@@ -39,7 +39,6 @@ void lloydStep(std::vector<Vec>& points, std::size_t first, std::size_t last,
                const std::vector<Vec>& samples, Project project) {
   const PointCloud<Vec> cloud{&points, last};
   KdTree<Vec> tree(Vec::length(), cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-  tree.buildIndex();
   std::vector<Vec> sum(last - first, Vec(0));
   std::vector<std::size_t> hits(last - first, 0);
   for (const Vec& sample : samples) {

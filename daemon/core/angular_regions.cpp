@@ -1,0 +1,122 @@
+#include "core/angular_regions.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "core/cube_map_lookup.h"
+#include "core/sphere_points.h"
+
+namespace vem {
+namespace {
+
+// Angle between unit vectors, accurate for small and large angles alike.
+double angleBetweenRad(glm::dvec3 a, glm::dvec3 b) {
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+std::uint32_t nearestCentre(const std::vector<glm::dvec3>& centres, glm::dvec3 dir) {
+  std::size_t best = 0;
+  double bestDot = -2.0;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const double d = glm::dot(centres[i], dir);
+    if (d > bestDot) {
+      bestDot = d;
+      best = i;
+    }
+  }
+  return std::uint32_t(best);
+}
+
+// Fills the table and grows each region's radius to cover every texel that maps to it.
+void fillTable(AngularRegions& regions) {
+  const std::size_t texels = cubeTexelCount(regions.faceSize);
+  regions.regionOfTexel.resize(texels);
+  regions.radiusRad.assign(regions.count(), 0.0);
+  for (std::size_t index = 0; index < texels; ++index) {
+    const CubeTexel texel = cubeTexelFromIndex(index, regions.faceSize);
+    const glm::dvec3 centre = cubeTexelCentreDirection(texel, regions.faceSize);
+    const std::uint32_t region = nearestCentre(regions.centres, centre);
+    regions.regionOfTexel[index] = region;
+    const double reach = angleBetweenRad(regions.centres[region], centre) +
+                         cubeTexelRadiusRad(texel, regions.faceSize);
+    regions.radiusRad[region] = std::max(regions.radiusRad[region], reach);
+  }
+  for (double& radius : regions.radiusRad) radius += kRegionRadiusMarginRad;
+}
+
+// Appends to `out` the lights within `limitRad` of `centre`, in light order. Branch-free: every
+// index is written and the end advances only past the ones that pass (directions are unordered, so
+// a branch would mispredict half the time).
+void appendLightsWithin(glm::dvec3 centre, const std::vector<glm::dvec3>& dirs, double limitRad,
+                        std::vector<std::uint32_t>& out) {
+  const double minDot = limitRad >= std::numbers::pi ? -2.0 : std::cos(limitRad);
+  std::size_t end = out.size();
+  out.resize(end + dirs.size());
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
+    out[end] = std::uint32_t(i);
+    end += glm::dot(centre, dirs[i]) > minDot ? 1 : 0;
+  }
+  out.resize(end);
+}
+
+}  // namespace
+
+std::uint32_t AngularRegions::regionOf(glm::dvec3 dir) const {
+  return regionOfTexel[cubeTexelIndex(cubeTexelOf(dir, faceSize), faceSize)];
+}
+
+AngularRegions makeAngularRegions(int regionCount, int faceSize) {
+  assert(regionCount >= 1 && faceSize >= 1);
+  AngularRegions regions;
+  regions.centres = fibonacciSphere(regionCount);
+  regions.faceSize = faceSize;
+  fillTable(regions);
+  return regions;
+}
+
+double minCentreSeparationRad(const AngularRegions& regions) {
+  assert(regions.count() >= 2);
+  double maxDot = -1.0;
+  for (std::size_t i = 0; i < regions.count(); ++i) {
+    for (std::size_t j = i + 1; j < regions.count(); ++j) {
+      maxDot = std::max(maxDot, glm::dot(regions.centres[i], regions.centres[j]));
+    }
+  }
+  return std::acos(std::clamp(maxDot, -1.0, 1.0));
+}
+
+std::span<const std::uint32_t> RegionLightLists::lightsOf(std::uint32_t region) const {
+  assert(std::size_t(region) + 1 < offsets.size());
+  return std::span<const std::uint32_t>(lightIndices)
+      .subspan(offsets[region], offsets[region + 1] - offsets[region]);
+}
+
+double RegionLightLists::meanFraction(std::size_t lightCount) const {
+  const std::size_t regionCount = offsets.empty() ? 0 : offsets.size() - 1;
+  if (lightCount == 0 || regionCount == 0) return 0.0;
+  return double(lightIndices.size()) / (double(regionCount) * double(lightCount));
+}
+
+RegionLightLists regionLightLists(const AngularRegions& regions, std::span<const Light> lights,
+                                  double reachRad) {
+  std::vector<glm::dvec3> dirs;
+  dirs.reserve(lights.size());
+  for (const Light& light : lights) dirs.push_back(glm::normalize(glm::dvec3(light.dir)));
+  RegionLightLists lists;
+  lists.offsets.reserve(regions.count() + 1);
+  lists.offsets.push_back(0);
+  for (std::size_t i = 0; i < regions.count(); ++i) {
+    appendLightsWithin(regions.centres[i], dirs, regions.radiusRad[i] + reachRad,
+                       lists.lightIndices);
+    lists.offsets.push_back(std::uint32_t(lists.lightIndices.size()));
+  }
+  return lists;
+}
+
+RegionLightLists visibleLightLists(const AngularRegions& regions, const LightSet& lights) {
+  return regionLightLists(regions, lights.lights, kHemisphereReachRad);
+}
+
+}  // namespace vem
