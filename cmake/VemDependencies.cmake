@@ -22,3 +22,4 @@ endif()
 if(VEM_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
 endif()
+find_package(fmt REQUIRED)                       # libfmt-dev (with spdlog): formatting in the shells

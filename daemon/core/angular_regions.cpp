@@ -4,6 +4,8 @@
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
+#include <span>
 
 #include "core/cube_map_lookup.h"
 #include "core/sphere_points.h"
@@ -46,19 +48,41 @@ void fillTable(AngularRegions& regions) {
   for (double& radius : regions.radiusRad) radius += kRegionRadiusMarginRad;
 }
 
-// Appends to `out` the lights within `limitRad` of `centre`, in light order. Branch-free: every
-// index is written and the end advances only past the ones that pass (directions are unordered, so
-// a branch would mispredict half the time).
-void appendLightsWithin(glm::dvec3 centre, const std::vector<glm::dvec3>& dirs, double limitRad,
-                        std::vector<std::uint32_t>& out) {
-  const double minDot = limitRad >= std::numbers::pi ? -2.0 : std::cos(limitRad);
-  std::size_t end = out.size();
-  out.resize(end + dirs.size());
-  for (std::size_t i = 0; i < dirs.size(); ++i) {
-    out[end] = std::uint32_t(i);
-    end += glm::dot(centre, dirs[i]) > minDot ? 1 : 0;
+// Light directions as float arrays, one per axis, so the region tests vectorise.
+struct DirectionArrays {
+  std::vector<float> x, y, z;
+};
+
+DirectionArrays directionArrays(std::span<const Light> lights) {
+  DirectionArrays d;
+  d.x.reserve(lights.size());
+  d.y.reserve(lights.size());
+  d.z.reserve(lights.size());
+  for (const Light& light : lights) {
+    const glm::vec3 u = glm::normalize(light.dir);
+    d.x.push_back(u.x);
+    d.y.push_back(u.y);
+    d.z.push_back(u.z);
   }
-  out.resize(end);
+  return d;
+}
+
+// Appends to `out` the lights within `limitRad` of `centre`, in light order. The test runs in float
+// with kFloatDotSlack of slack toward inclusion, so it stays conservative; it is branch-free (an
+// index is always written into `scratch`, the end advances only past the ones that pass).
+void appendLightsWithin(glm::dvec3 centre, const DirectionArrays& dirs, double limitRad,
+                        std::vector<std::uint32_t>& scratch, std::vector<std::uint32_t>& out) {
+  constexpr float kFloatDotSlack = 1e-5F;
+  const float minDot = limitRad >= std::numbers::pi ? -2.0F : float(std::cos(limitRad)) - kFloatDotSlack;
+  const float cx = float(centre.x), cy = float(centre.y), cz = float(centre.z);
+  const std::size_t n = dirs.x.size();
+  scratch.resize(n);
+  std::size_t end = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    scratch[end] = std::uint32_t(i);
+    end += cx * dirs.x[i] + cy * dirs.y[i] + cz * dirs.z[i] > minDot ? 1 : 0;
+  }
+  out.insert(out.end(), scratch.begin(), scratch.begin() + std::ptrdiff_t(end));
 }
 
 }  // namespace
@@ -101,14 +125,13 @@ double RegionLightLists::meanFraction(std::size_t lightCount) const {
 
 RegionLightLists regionLightLists(const AngularRegions& regions, std::span<const Light> lights,
                                   double reachRad) {
-  std::vector<glm::dvec3> dirs;
-  dirs.reserve(lights.size());
-  for (const Light& light : lights) dirs.push_back(glm::normalize(glm::dvec3(light.dir)));
+  const DirectionArrays dirs = directionArrays(lights);
+  std::vector<std::uint32_t> scratch;
   RegionLightLists lists;
   lists.offsets.reserve(regions.count() + 1);
   lists.offsets.push_back(0);
   for (std::size_t i = 0; i < regions.count(); ++i) {
-    appendLightsWithin(regions.centres[i], dirs, regions.radiusRad[i] + reachRad,
+    appendLightsWithin(regions.centres[i], dirs, regions.radiusRad[i] + reachRad, scratch,
                        lists.lightIndices);
     lists.offsets.push_back(std::uint32_t(lists.lightIndices.size()));
   }

@@ -10,9 +10,10 @@
 namespace vem {
 namespace {
 
-// A channel value as the importance sees it: NaN, +-Inf and negatives become 0.
-inline float cleanChannel(float v) {
-  return (v >= 0.0F && v <= std::numeric_limits<float>::max()) ? v : 0.0F;
+// A pixel as the importance sees it: any NaN, infinite or negative channel makes it black.
+inline bool goodPixel(glm::vec3 v) {
+  const float y = float(kRec709R) * v.x + float(kRec709G) * v.y + float(kRec709B) * v.z;
+  return std::min(std::min(v.x, v.y), v.z) >= 0.0F && y <= std::numeric_limits<float>::max();
 }
 
 void resizeFor(SamplingTables& t, const EnvMap& map) {
@@ -27,22 +28,42 @@ void resizeFor(SamplingTables& t, const EnvMap& map) {
   t.tentCdf.resize(std::size_t(map.height) + 2);
 }
 
-// One row: cumulative luminance, and the row's rgb sum. Returns the number of bad pixels.
-std::size_t accumulateRow(const float* rgb, int width, double* cumulative, glm::dvec3& rowRgb) {
-  std::size_t bad = 0;
-  double sum = 0;
-  glm::dvec3 rgbSum(0);
-  cumulative[0] = 0;
+// Pass 1 over a row (branch-free): each pixel's luminance into cumulative[x + 1], 0 for a bad pixel.
+// A pixel is bad when a channel is NaN, infinite or negative: then its luminance is NaN or infinite,
+// or its smallest channel is below 0. Returns the number of bad pixels.
+std::size_t rowLuminance(const float* rgb, int width, double* cumulative) {
+  unsigned bad = 0;
   for (int x = 0; x < width; ++x) {
     const float r = rgb[3 * x], g = rgb[3 * x + 1], b = rgb[3 * x + 2];
-    const float cr = cleanChannel(r), cg = cleanChannel(g), cb = cleanChannel(b);
-    bad += (cr != r || cg != g || cb != b) ? 1 : 0;
-    sum += luminance(double(cr), double(cg), double(cb));
-    cumulative[x + 1] = sum;
-    rgbSum += glm::dvec3(cr, cg, cb);
+    const float y = float(kRec709R) * r + float(kRec709G) * g + float(kRec709B) * b;
+    const bool good = std::min(std::min(r, g), b) >= 0.0F && y <= std::numeric_limits<float>::max();
+    bad += unsigned(!good);
+    cumulative[x + 1] = good ? double(y) : 0.0;
   }
-  rowRgb = rgbSum;
   return bad;
+}
+
+// Pass 2: prefix sums in place, in blocks of four so the serial dependency is one addition per
+// block rather than per pixel (the sums stay in double: see the header).
+void prefixSumInPlace(double* cumulative, int width) {
+  cumulative[0] = 0;
+  double base = 0;
+  int x = 1;
+  for (; x + 3 <= width; x += 4) {
+    const double a = cumulative[x];
+    const double b = a + cumulative[x + 1];
+    const double c = b + cumulative[x + 2];
+    const double d = c + cumulative[x + 3];
+    cumulative[x] = base + a;
+    cumulative[x + 1] = base + b;
+    cumulative[x + 2] = base + c;
+    cumulative[x + 3] = base + d;
+    base += d;
+  }
+  for (; x <= width; ++x) {
+    base += cumulative[x];
+    cumulative[x] = base;
+  }
 }
 
 void buildMarginals(SamplingTables& t) {
@@ -72,7 +93,6 @@ SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled) {
   const double oneMinusCosMax = map.layout == MapLayout::Sphere ? 2.0 : 1.0;
   t.badPixels = 0;
   t.luminanceSr = 0;
-  t.rgbSr = glm::dvec3(0);
   for (int y = 0; y <= map.height; ++y) {
     const double theta = thetaFromRowCoord(map.layout, map.height, y);
     const double half = std::sin(0.5 * theta);
@@ -81,12 +101,11 @@ SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled) {
   for (int y = 0; y < map.height; ++y) {
     const double omega = pixelSolidAngleSr(map.layout, map.width, map.height, y);
     t.pixelSolidAngleSr[std::size_t(y)] = omega;
-    glm::dvec3 rowRgb;
     double* cumulative = &t.rowCumulativeY[std::size_t(y) * std::size_t(map.width + 1)];
-    t.badPixels += accumulateRow(&map.rgb[3 * std::size_t(y) * std::size_t(map.width)], map.width,
-                                 cumulative, rowRgb);
+    t.badPixels +=
+        rowLuminance(&map.rgb[3 * std::size_t(y) * std::size_t(map.width)], map.width, cumulative);
+    prefixSumInPlace(cumulative, map.width);
     t.luminanceSr += omega * cumulative[map.width];
-    t.rgbSr += omega * rowRgb;
   }
   t.black = !(t.luminanceSr > 0);
   // Uniform importance for a black map; otherwise a floor far below anything that matters.
@@ -102,9 +121,19 @@ double SamplingTables::rowCumulativeAt(int y, double xc) const {
   return lo + (xc - x) * (hi - lo);
 }
 
+glm::dvec3 radianceIntegralSr(const EnvMap& map) {
+  glm::dvec3 total(0);
+  for (int y = 0; y < map.height; ++y) {
+    glm::dvec3 row(0);
+    for (int x = 0; x < map.width; ++x) row += sanitizedRgb(map, x, y);
+    total += pixelSolidAngleSr(map.layout, map.width, map.height, y) * row;
+  }
+  return total;
+}
+
 glm::dvec3 sanitizedRgb(const EnvMap& map, int x, int y) {
   const glm::vec3 v = map.at(x, y);
-  return {cleanChannel(v.x), cleanChannel(v.y), cleanChannel(v.z)};
+  return goodPixel(v) ? glm::dvec3(v) : glm::dvec3(0.0);
 }
 
 double rowCoordFromTheta(const SamplingTables& t, double thetaRad) {

@@ -2,7 +2,8 @@
 // samplers invert (paper 004 section 3.1).
 //
 // Importance of a pixel = its Rec. 709 luminance times its solid angle (color.h, env_map.h).
-// NaN, infinite and negative channel values count as 0 (and are counted here so the shell can warn).
+// A pixel with a NaN, infinite or negative channel counts as black (and is counted here so the shell
+// can warn once).
 // A grey floor of kFloorFraction times the map's mean luminance is added to every pixel's importance
 // (and, as grey, to its colour) so that the cumulative tables are strictly increasing for any
 // non-negative map: this is what makes the Havran mapping continuous and bijective everywhere, also
@@ -45,8 +46,7 @@ struct SamplingTables {
   double floorY = 0.0;        // luminance added to every pixel
   double totalMass = 0.0;     // sum of rowMass = boxCdf.back() = tentCdf.back()
   double luminanceSr = 0.0;   // integral of the (sanitised) luminance over solid angle, no floor
-  glm::dvec3 rgbSr{0.0};      // integral of the (sanitised) rgb over solid angle, no floor
-  std::size_t badPixels = 0;  // pixels with a NaN, infinite or negative channel
+  std::size_t badPixels = 0;  // pixels with a NaN, infinite or negative channel (counted as black)
   bool black = false;
 
   [[nodiscard]] double cumulativeY(int y, int x) const {
@@ -64,7 +64,11 @@ struct SamplingTables {
 // allocating every frame); its contents are ignored.
 [[nodiscard]] SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled = {});
 
-// A pixel's rgb with NaN, infinite and negative channels as 0.
+// The integral of the map's (sanitised) rgb over solid angle, per channel (map units x sr): what the
+// lights' rgb sum to. Not part of the per-frame tables (the lights need only the luminance).
+[[nodiscard]] glm::dvec3 radianceIntegralSr(const EnvMap& map);
+
+// A pixel's rgb, or 0 when a channel is NaN, infinite or negative.
 [[nodiscard]] glm::dvec3 sanitizedRgb(const EnvMap& map, int x, int y);
 
 // The row coordinate r in [0, H] of polar angle theta.

@@ -1,0 +1,154 @@
+#include "report_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "accuracy_study.h"
+#include "bench_fixtures.h"
+#include "svg_plot.h"
+
+namespace vem::bench {
+namespace {
+
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown CPU";
+}
+
+std::string timeCell(const ReportInputs& in, const std::string& name) {
+  const auto it = in.timesUs.find(name);
+  return it == in.timesUs.end() ? "-" : fmt::format("{:.1f}", it->second);
+}
+
+double timeOf(const ReportInputs& in, const std::string& name) {
+  const auto it = in.timesUs.find(name);
+  return it == in.timesUs.end() ? std::nan("") : it->second;
+}
+
+void stageTable(std::ostringstream& md, const ReportInputs& in) {
+  const auto& configs = stageConfigs();
+  md << "## Stage timings\n\nMicroseconds per frame, one thread, mean of Google Benchmark's runs. "
+        "Input: a procedural sky as the camera's polar (hemisphere) map.\n\n| stage |";
+  for (const auto& c : configs) md << " " << c.label() << " |";
+  md << " paper 004, section 6 (Pentium 4, 3 GHz; 360x90, 300 lights) |\n|---|";
+  for (std::size_t i = 0; i < configs.size(); ++i) md << "---:|";
+  md << "---|\n";
+  const std::vector<std::tuple<std::string, std::string, std::string>> rows{
+      {"tables", "importance and CDFs", "under 2000 (CDF and luminous power)"},
+      {"lights_havran", "N lights, Havran sampler", "732 for 300 (410 samples/ms)"},
+      {"lights_standard", "N lights, standard sampler (baseline)", "-"},
+      {"fir", "FIR, paper's 9 taps", "1000 for 210 lights"},
+      {"clustering", "clustering (Q = 72)", "about 1000 for 300 lights"},
+      {"regions", "angular regions (200), light lists", "under 1000"},
+      {"chain", "whole chain (all of the above, Havran)", "under 5000"}};
+  for (const auto& [key, label, paper] : rows) {
+    md << "| " << label << " |";
+    for (std::size_t i = 0; i < configs.size(); ++i) md << " " << timeCell(in, fmt::format("stage/{}/{}", key, i)) << " |";
+    md << " " << paper << " |\n";
+  }
+  md << "| samples per ms, Havran |";
+  for (std::size_t i = 0; i < configs.size(); ++i)
+    md << fmt::format(" {:.0f} |", 1e3 * double(configs[i].lights) / timeOf(in, fmt::format("stage/lights_havran/{}", i)));
+  md << " 410 |\n\n";
+  const double chain = timeOf(in, "stage/chain/1");
+  md << fmt::format("Target: the whole chain at 1024x256 with 1024 lights under 1000 us on one core: "
+                    "**{:.0f} us, {}**.\n\n", chain, chain < 1000 ? "met" : "NOT met");
+}
+
+void accuracyVersusTime(std::ostringstream& md, const ReportInputs& in,
+                        const std::vector<MapErrors>& sphere, const std::filesystem::path& docsDir) {
+  md << "## Accuracy against time\n\nThe 18 shared HDRIs (512x256, full sphere). Error: relative RMS "
+        "of the irradiance from the lights at 64 Fibonacci normals against exact integration over "
+        "the map, mean over the maps. Time: importance tables plus N lights, per frame.\n\n"
+        "| N | Havran error | Havran time (us) | standard error | standard time (us) |\n"
+        "|---:|---:|---:|---:|---:|\n";
+  PlotSeries havran{"Havran", {}}, standard{"standard", {}};
+  for (std::size_t k = 0; k < in.counts.size(); ++k) {
+    double h = 0, s = 0;
+    for (const auto& row : sphere) {
+      h += row.havran[k] / double(sphere.size());
+      s += row.standard[k] / double(sphere.size());
+    }
+    const double th = timeOf(in, fmt::format("accuracy/havran/{}", in.counts[k]));
+    const double ts = timeOf(in, fmt::format("accuracy/standard/{}", in.counts[k]));
+    md << fmt::format("| {} | {:.4f} | {:.1f} | {:.4f} | {:.1f} |\n", in.counts[k], h, th, s, ts);
+    havran.points.push_back({th, h});
+    standard.points.push_back({ts, s});
+  }
+  writeLogLogSvg(docsDir / "accuracy-vs-time.svg", "time per frame (us)", "irradiance error (relative RMS)",
+                 {havran, standard});
+  md << "\n![accuracy against time](accuracy-vs-time.svg)\n\n";
+}
+
+void perMapTable(std::ostringstream& md, const std::vector<MapErrors>& rows,
+                 const std::vector<std::size_t>& counts, const char* title) {
+  md << "### " << title << "\n\n| map |";
+  for (std::size_t n : counts) md << " Havran " << n << " | standard " << n << " |";
+  md << "\n|---|";
+  for (std::size_t k = 0; k < counts.size(); ++k) md << "---:|---:|";
+  md << "\n";
+  std::vector<int> wins(counts.size(), 0);
+  std::vector<double> meanH(counts.size(), 0), meanS(counts.size(), 0);
+  for (const auto& row : rows) {
+    md << "| " << row.map << " |";
+    for (std::size_t k = 0; k < counts.size(); ++k) {
+      const bool win = row.havran[k] <= row.standard[k];
+      wins[k] += win ? 1 : 0;
+      meanH[k] += row.havran[k] / double(rows.size());
+      meanS[k] += row.standard[k] / double(rows.size());
+      md << fmt::format(" {}{:.4f}{} | {:.4f} |", win ? "**" : "", row.havran[k], win ? "**" : "", row.standard[k]);
+    }
+    md << "\n";
+  }
+  md << "| mean |";
+  for (std::size_t k = 0; k < counts.size(); ++k) md << fmt::format(" {:.4f} | {:.4f} |", meanH[k], meanS[k]);
+  md << "\n| Havran at or below standard |";
+  for (std::size_t k = 0; k < counts.size(); ++k) md << fmt::format(" {} of {} | |", wins[k], rows.size());
+  md << "\n\n";
+}
+
+void patternTable(std::ostringstream& md, const std::vector<PatternErrors>& rows,
+                  const std::vector<std::size_t>& counts) {
+  md << "## Sampling pattern\n\nMean irradiance error over the 18 HDRIs (sphere) for three patterns "
+        "fed to both samplers.\n\n| pattern |";
+  for (std::size_t n : counts) md << " Havran " << n << " | standard " << n << " |";
+  md << "\n|---|";
+  for (std::size_t k = 0; k < counts.size(); ++k) md << "---:|---:|";
+  md << "\n";
+  for (const auto& row : rows) {
+    md << "| " << row.pattern << " |";
+    for (std::size_t k = 0; k < counts.size(); ++k) md << fmt::format(" {:.4f} | {:.4f} |", row.havranMean[k], row.standardMean[k]);
+    md << "\n";
+  }
+  md << "\n";
+}
+
+}  // namespace
+
+std::string writeReport(const ReportInputs& in, const std::filesystem::path& docsDir) {
+  std::ostringstream md;
+  md << "# Benchmarks\n\nGenerated by `cmake --build build --target bench`, which runs "
+        "`build/tests/bench/vem_bench --report docs/BENCHMARKS.md` (Release flags of the build, one "
+        "thread). Machine: "
+     << cpuModel() << ". Do not edit by hand: rerun the command.\n\n";
+  stageTable(md, in);
+  const auto sphere = perMapErrors(in.counts, MapLayout::Sphere);
+  accuracyVersusTime(md, in, sphere, docsDir);
+  const std::vector<std::size_t> tableCounts{64, 256, 1024};
+  md << "## Accuracy per map\n\nRelative RMS irradiance error at 64 normals; bold where Havran's is at "
+        "or below the standard sampler's. The hemisphere table uses each map's upper half as the "
+        "camera's polar map.\n\n";
+  perMapTable(md, perMapErrors(tableCounts, MapLayout::Sphere), tableCounts, "Full sphere (equirectangular)");
+  perMapTable(md, perMapErrors(tableCounts, MapLayout::Hemisphere), tableCounts, "Upper hemisphere (polar)");
+  patternTable(md, patternComparison(tableCounts), tableCounts);
+  return md.str();
+}
+
+}  // namespace vem::bench

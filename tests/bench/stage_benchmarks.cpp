@@ -1,0 +1,83 @@
+// Per-stage timings of the light pipeline (single-threaded), registered by name so the report can
+// place them in its table: "stage/<stage>/<config index>".
+#include "stage_benchmarks.h"
+
+#include <functional>
+
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+
+#include "bench_fixtures.h"
+#include "core/angular_regions.h"
+#include "core/default_pattern.h"
+#include "core/light_clustering.h"
+#include "core/light_generator.h"
+#include "core/sampling_tables.h"
+#include "core/temporal_filter.h"
+#include "support/test_maps.h"
+
+namespace vem::bench {
+namespace {
+
+struct Pipeline {
+  EnvMap map;
+  SamplingTables tables;
+  LightSet lights;
+  AngularRegions regions = makeAngularRegions();
+  ClusteringParams clustering{72, kDefaultClusterCorrectionFactor, MapLayout::Hemisphere};
+
+  explicit Pipeline(const StageConfig& c)
+      : map(testing::proceduralSky(MapLayout::Hemisphere, c.width, c.height)),
+        tables(buildSamplingTables(map)),
+        lights(generateLights(map, tables, defaultSamplingPattern(map.layout).first(c.lights),
+                              SamplerKind::Havran)) {}
+};
+
+void registerStage(const std::string& stage, std::size_t index,
+                   std::function<void(benchmark::State&)> body) {
+  benchmark::RegisterBenchmark(fmt::format("stage/{}/{}", stage, index).c_str(), body)
+      ->Unit(benchmark::kMicrosecond);
+}
+
+}  // namespace
+
+void registerStageBenchmarks() {
+  const auto& configs = stageConfigs();
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    auto p = std::make_shared<Pipeline>(configs[i]);
+    const auto pattern = defaultSamplingPattern(MapLayout::Hemisphere).first(configs[i].lights);
+    registerStage("tables", i, [p](benchmark::State& s) {
+      for (auto _ : s) p->tables = buildSamplingTables(p->map, std::move(p->tables));
+    });
+    for (SamplerKind kind : {SamplerKind::Havran, SamplerKind::Standard}) {
+      registerStage(std::string("lights_") + samplerName(kind), i, [p, pattern, kind](benchmark::State& s) {
+        for (auto _ : s) benchmark::DoNotOptimize(generateLights(p->map, p->tables, pattern, kind));
+      });
+    }
+    registerStage("fir", i, [p](benchmark::State& s) {
+      TemporalFilter filter(presetTaps(FilterPreset::Paper9));
+      std::uint64_t seq = 0;
+      for (auto _ : s) benchmark::DoNotOptimize(filter.push(seq++, p->lights));
+    });
+    registerStage("clustering", i, [p](benchmark::State& s) {
+      for (auto _ : s) benchmark::DoNotOptimize(clusterLights(p->lights, p->clustering));
+    });
+    registerStage("regions", i, [p](benchmark::State& s) {
+      for (auto _ : s) benchmark::DoNotOptimize(visibleLightLists(p->regions, p->lights));
+    });
+    registerStage("chain", i, [p, pattern](benchmark::State& s) {
+      TemporalFilter filter(presetTaps(FilterPreset::Paper9));
+      std::uint64_t seq = 0;
+      for (auto _ : s) {
+        p->tables = buildSamplingTables(p->map, std::move(p->tables));
+        const LightSet raw = generateLights(p->map, p->tables, pattern, SamplerKind::Havran);
+        const FilterResult filtered = filter.push(seq++, raw);
+        const Clustering clusters = clusterLights(*filtered.lights, p->clustering);
+        benchmark::DoNotOptimize(visibleLightLists(p->regions, *filtered.lights));
+        benchmark::DoNotOptimize(clusters);
+      }
+    });
+  }
+}
+
+}  // namespace vem::bench

@@ -1,0 +1,4 @@
+#pragma once
+namespace vem::bench {
+void registerStageBenchmarks();
+}

@@ -1,0 +1,20 @@
+// A small log-log line plot written as SVG (no plotting library in Debian's C++ packages fits a
+// benchmark report better than a few lines of SVG).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vem::bench {
+
+struct PlotSeries {
+  std::string name;
+  std::vector<std::pair<double, double>> points;  // (x, y), both > 0
+};
+
+void writeLogLogSvg(const std::filesystem::path& path, const std::string& xLabel,
+                    const std::string& yLabel, const std::vector<PlotSeries>& series);
+
+}  // namespace vem::bench
