@@ -1,6 +1,8 @@
 #include "core/angular_regions.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -67,22 +69,47 @@ DirectionArrays directionArrays(std::span<const Light> lights) {
   return d;
 }
 
+// For each 8-bit mask, the positions of its set bits (left-packed) and how many there are.
+struct LeftPackTable {
+  std::array<std::array<std::uint8_t, 8>, 256> positions{};
+  std::array<std::uint8_t, 256> counts{};
+  LeftPackTable() {
+    for (unsigned mask = 0; mask < 256; ++mask) {
+      for (unsigned bit = 0; bit < 8; ++bit)
+        if ((mask >> bit) & 1U) positions[mask][counts[mask]++] = std::uint8_t(bit);
+    }
+  }
+};
+
 // Appends to `out` the lights within `limitRad` of `centre`, in light order. The test runs in float
-// with kFloatDotSlack of slack toward inclusion, so it stays conservative; it is branch-free (an
-// index is always written into `scratch`, the end advances only past the ones that pass).
+// with kFloatDotSlack of slack toward inclusion, so it stays conservative. Branch-free: the tests
+// fill `keep` (vectorised), then each group of eight lights writes its kept indices at once through
+// a left-pack table (a serial compaction costs a dependent store per light).
 void appendLightsWithin(glm::dvec3 centre, const DirectionArrays& dirs, double limitRad,
-                        std::vector<std::uint32_t>& scratch, std::vector<std::uint32_t>& out) {
+                        std::vector<std::uint8_t>& keep, std::vector<std::uint32_t>& out) {
+  static const LeftPackTable pack;
   constexpr float kFloatDotSlack = 1e-5F;
   const float minDot = limitRad >= std::numbers::pi ? -2.0F : float(std::cos(limitRad)) - kFloatDotSlack;
   const float cx = float(centre.x), cy = float(centre.y), cz = float(centre.z);
   const std::size_t n = dirs.x.size();
-  scratch.resize(n);
-  std::size_t end = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    scratch[end] = std::uint32_t(i);
-    end += cx * dirs.x[i] + cy * dirs.y[i] + cz * dirs.z[i] > minDot ? 1 : 0;
+  const std::size_t padded = (n + 7) / 8 * 8;
+  keep.assign(padded, 0);
+  const float* x = dirs.x.data();
+  const float* y = dirs.y.data();
+  const float* z = dirs.z.data();
+  std::uint8_t* k = keep.data();
+  for (std::size_t i = 0; i < n; ++i) k[i] = std::uint8_t(cx * x[i] + cy * y[i] + cz * z[i] > minDot);
+  std::size_t end = out.size();
+  out.resize(end + padded);
+  std::uint32_t* o = out.data();
+  for (std::size_t group = 0; group < padded; group += 8) {
+    unsigned mask = 0;
+    for (unsigned bit = 0; bit < 8; ++bit) mask |= unsigned(k[group + bit]) << bit;
+    const auto& positions = pack.positions[mask];
+    for (unsigned j = 0; j < 8; ++j) o[end + j] = std::uint32_t(group + positions[j]);
+    end += pack.counts[mask];
   }
-  out.insert(out.end(), scratch.begin(), scratch.begin() + std::ptrdiff_t(end));
+  out.resize(end);
 }
 
 }  // namespace
@@ -126,12 +153,13 @@ double RegionLightLists::meanFraction(std::size_t lightCount) const {
 RegionLightLists regionLightLists(const AngularRegions& regions, std::span<const Light> lights,
                                   double reachRad) {
   const DirectionArrays dirs = directionArrays(lights);
-  std::vector<std::uint32_t> scratch;
+  std::vector<std::uint8_t> keep;
   RegionLightLists lists;
+  lists.lightIndices.reserve(regions.count() * lights.size() * 3 / 4);
   lists.offsets.reserve(regions.count() + 1);
   lists.offsets.push_back(0);
   for (std::size_t i = 0; i < regions.count(); ++i) {
-    appendLightsWithin(regions.centres[i], dirs, regions.radiusRad[i] + reachRad, scratch,
+    appendLightsWithin(regions.centres[i], dirs, regions.radiusRad[i] + reachRad, keep,
                        lists.lightIndices);
     lists.offsets.push_back(std::uint32_t(lists.lightIndices.size()));
   }

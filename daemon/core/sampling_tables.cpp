@@ -10,12 +10,6 @@
 namespace vem {
 namespace {
 
-// A pixel as the importance sees it: any NaN, infinite or negative channel makes it black.
-inline bool goodPixel(glm::vec3 v) {
-  const float y = float(kRec709R) * v.x + float(kRec709G) * v.y + float(kRec709B) * v.z;
-  return std::min(std::min(v.x, v.y), v.z) >= 0.0F && y <= std::numeric_limits<float>::max();
-}
-
 void resizeFor(SamplingTables& t, const EnvMap& map) {
   t.layout = map.layout;
   t.width = map.width;
@@ -28,42 +22,48 @@ void resizeFor(SamplingTables& t, const EnvMap& map) {
   t.tentCdf.resize(std::size_t(map.height) + 2);
 }
 
-// Pass 1 over a row (branch-free): each pixel's luminance into cumulative[x + 1], 0 for a bad pixel.
-// A pixel is bad when a channel is NaN, infinite or negative: then its luminance is NaN or infinite,
-// or its smallest channel is below 0. Returns the number of bad pixels.
-std::size_t rowLuminance(const float* rgb, int width, double* cumulative) {
+// A pixel's luminance, or 0 when it is bad: a NaN, infinite or negative channel makes its luminance
+// NaN or infinite, or its smallest channel negative. Branch-free.
+inline float pixelLuminance(const float* rgb, unsigned& bad) {
+  const float r = rgb[0], g = rgb[1], b = rgb[2];
+  const float y = float(kRec709R) * r + float(kRec709G) * g + float(kRec709B) * b;
+  const bool good = std::min(std::min(r, g), b) >= 0.0F && y <= std::numeric_limits<float>::max();
+  bad += unsigned(!good);
+  return good ? y : 0.0F;
+}
+
+// One row in one pass: cumulative[x] = luminance summed over columns [0, x). The sums run in double
+// in blocks of four pixels, so the serial dependency is one addition per block, not per pixel.
+// Returns the number of bad pixels.
+std::size_t accumulateRow(const float* rgb, int width, double* cumulative) {
   unsigned bad = 0;
-  for (int x = 0; x < width; ++x) {
-    const float r = rgb[3 * x], g = rgb[3 * x + 1], b = rgb[3 * x + 2];
-    const float y = float(kRec709R) * r + float(kRec709G) * g + float(kRec709B) * b;
-    const bool good = std::min(std::min(r, g), b) >= 0.0F && y <= std::numeric_limits<float>::max();
-    bad += unsigned(!good);
-    cumulative[x + 1] = good ? double(y) : 0.0;
+  double base = 0;
+  cumulative[0] = 0;
+  int x = 0;
+  for (; x + 4 <= width; x += 4) {
+    const double a = pixelLuminance(rgb + 3 * x, bad);
+    const double b = a + double(pixelLuminance(rgb + 3 * x + 3, bad));
+    const double c = b + double(pixelLuminance(rgb + 3 * x + 6, bad));
+    const double d = c + double(pixelLuminance(rgb + 3 * x + 9, bad));
+    cumulative[x + 1] = base + a;
+    cumulative[x + 2] = base + b;
+    cumulative[x + 3] = base + c;
+    cumulative[x + 4] = base + d;
+    base += d;
+  }
+  for (; x < width; ++x) {
+    base += double(pixelLuminance(rgb + 3 * x, bad));
+    cumulative[x + 1] = base;
   }
   return bad;
 }
 
-// Pass 2: prefix sums in place, in blocks of four so the serial dependency is one addition per
-// block rather than per pixel (the sums stay in double: see the header).
-void prefixSumInPlace(double* cumulative, int width) {
-  cumulative[0] = 0;
-  double base = 0;
-  int x = 1;
-  for (; x + 3 <= width; x += 4) {
-    const double a = cumulative[x];
-    const double b = a + cumulative[x + 1];
-    const double c = b + cumulative[x + 2];
-    const double d = c + cumulative[x + 3];
-    cumulative[x] = base + a;
-    cumulative[x + 1] = base + b;
-    cumulative[x + 2] = base + c;
-    cumulative[x + 3] = base + d;
-    base += d;
-  }
-  for (; x <= width; ++x) {
-    base += cumulative[x];
-    cumulative[x] = base;
-  }
+// A pixel as the importance sees it: any NaN, infinite or negative channel makes it black.
+inline bool goodPixel(glm::vec3 v) {
+  const float rgb[3] = {v.x, v.y, v.z};
+  unsigned bad = 0;
+  (void)pixelLuminance(rgb, bad);
+  return bad == 0;
 }
 
 void buildMarginals(SamplingTables& t) {
@@ -103,8 +103,7 @@ SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled) {
     t.pixelSolidAngleSr[std::size_t(y)] = omega;
     double* cumulative = &t.rowCumulativeY[std::size_t(y) * std::size_t(map.width + 1)];
     t.badPixels +=
-        rowLuminance(&map.rgb[3 * std::size_t(y) * std::size_t(map.width)], map.width, cumulative);
-    prefixSumInPlace(cumulative, map.width);
+        accumulateRow(&map.rgb[3 * std::size_t(y) * std::size_t(map.width)], map.width, cumulative);
     t.luminanceSr += omega * cumulative[map.width];
   }
   t.black = !(t.luminanceSr > 0);

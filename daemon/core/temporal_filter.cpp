@@ -70,6 +70,8 @@ FilterResult TemporalFilter::push(std::uint64_t seq, const LightSet& frame) {
   if (result.event == FrameEvent::ResetAfterGap) tracks_.clear();
   writeHeld(powers_, newestSeq_, seq, frame.luminanceSr);
   newestSeq_ = seq;
+  slotsBack_.resize(taps_.size());
+  for (std::size_t back = 0; back < taps_.size(); ++back) slotsBack_[back] = slotBack(seq, back, taps_.size());
 
   LightSet out;
   out.luminanceSr = filteredPower(seq);
@@ -84,6 +86,7 @@ FilterResult TemporalFilter::push(std::uint64_t seq, const LightSet& frame) {
 
 Light TemporalFilter::filterLight(std::uint64_t seq, const Light& light, double framePower,
                                   double powerOut) {
+  if (light.id >= tracks_.size()) tracks_.resize(std::size_t(light.id) + 1);
   Track& track = tracks_[light.id];
   const std::size_t k = taps_.size();
   if (track.dirs.empty()) track.dirs.resize(k);
@@ -97,17 +100,15 @@ Light TemporalFilter::filterLight(std::uint64_t seq, const Light& light, double 
   if (lit) track.rgbPerPower = glm::dvec3(light.rgb) / framePower;
 
   const glm::dvec3 rgb = powerOut * track.rgbPerPower.value_or(glm::dvec3(0.0));
-  return Light{light.id, glm::vec3(meanDirection(track, seq)), glm::vec3(rgb)};
+  return Light{light.id, glm::vec3(meanDirection(track)), glm::vec3(rgb)};
 }
 
-glm::dvec3 TemporalFilter::meanDirection(const Track& track, std::uint64_t seq) const {
+glm::dvec3 TemporalFilter::meanDirection(const Track& track) const {
   const std::vector<double>& w = taps_.weights();
   glm::dvec3 sum(0.0);
-  for (std::size_t back = 0; back < w.size(); ++back) {
-    sum += w[back] * track.dirs[slotBack(seq, back, w.size())];
-  }
+  for (std::size_t back = 0; back < w.size(); ++back) sum += w[back] * track.dirs[slotsBack_[back]];
   const double length = glm::length(sum);
-  if (!(length >= kMinMeanLength)) return track.dirs[slotOf(seq, w.size())];
+  if (!(length >= kMinMeanLength)) return track.dirs[slotsBack_[0]];
   return sum / length;
 }
 

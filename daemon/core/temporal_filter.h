@@ -26,7 +26,6 @@
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <optional>
 #include <vector>
 
@@ -79,13 +78,14 @@ class TemporalFilter {
   // framePower: the input frame's luminanceSr; powerOut: the filtered power.
   [[nodiscard]] Light filterLight(std::uint64_t seq, const Light& light, double framePower,
                                   double powerOut);
-  [[nodiscard]] glm::dvec3 meanDirection(const Track& track, std::uint64_t seq) const;
+  [[nodiscard]] glm::dvec3 meanDirection(const Track& track) const;
   [[nodiscard]] double filteredPower(std::uint64_t seq) const;
 
   FirTaps taps_;
   std::optional<std::uint64_t> newestSeq_;
   std::vector<double> powers_;  // ring of frame powers (luminanceSr), slot seq % K
-  std::map<std::uint32_t, Track> tracks_;
+  std::vector<Track> tracks_;           // indexed by light id (ids are pattern indices: dense)
+  std::vector<std::size_t> slotsBack_;  // this frame's ring slot of frame seq - k, k = 0 .. K - 1
 };
 
 }  // namespace vem

@@ -13,7 +13,7 @@ namespace {
 // A float as the double with the same shortest decimal form, so JSON shows 0.3, not 0.30000001.
 double shortest(float value) { return std::strtod(fmt::format("{}", value).c_str(), nullptr); }
 
-nlohmann::json lightJson(const Light& light) {
+nlohmann::ordered_json lightJson(const Light& light) {
   return {{"id", light.id},
           {"dir", {shortest(light.dir.x), shortest(light.dir.y), shortest(light.dir.z)}},
           {"rgb", {shortest(light.rgb.x), shortest(light.rgb.y), shortest(light.rgb.z)}}};
@@ -21,20 +21,20 @@ nlohmann::json lightJson(const Light& light) {
 
 }  // namespace
 
-nlohmann::json frameJson(const LightSet& lights, std::uint64_t frame) {
-  nlohmann::json array = nlohmann::json::array();
+nlohmann::ordered_json frameJson(const LightSet& lights, std::uint64_t frame) {
+  nlohmann::ordered_json array = nlohmann::ordered_json::array();
   for (const Light& light : lights.lights) array.push_back(lightJson(light));
   return {{"frame", frame}, {"count", lights.lights.size()}, {"lights", std::move(array)}};
 }
 
-nlohmann::json clusteredFrameJson(const LightSet& lights, int clusterQ, MapLayout layout,
+nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ, MapLayout layout,
                                   std::uint64_t frame) {
   ClusteringParams params;
   params.clusterBudget = clusterQ;
   params.layout = layout;
   const Clustering clustering = clusterLights(lights, params);
-  nlohmann::json out = frameJson(clustering.clusters, frame);
-  std::vector<nlohmann::json> members(clustering.clusters.lights.size(), nlohmann::json::array());
+  nlohmann::ordered_json out = frameJson(clustering.clusters, frame);
+  std::vector<nlohmann::ordered_json> members(clustering.clusters.lights.size(), nlohmann::ordered_json::array());
   for (std::size_t i = 0; i < lights.lights.size(); ++i) {
     members[clustering.clusterOfLight[i]].push_back(lights.lights[i].id);
   }

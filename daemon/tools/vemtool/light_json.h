@@ -14,8 +14,8 @@
 
 namespace vem::tool {
 
-[[nodiscard]] nlohmann::json frameJson(const LightSet& lights, std::uint64_t frame);
-[[nodiscard]] nlohmann::json clusteredFrameJson(const LightSet& lights, int clusterQ,
+[[nodiscard]] nlohmann::ordered_json frameJson(const LightSet& lights, std::uint64_t frame);
+[[nodiscard]] nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ,
                                                 MapLayout layout, std::uint64_t frame);
 
 }  // namespace vem::tool

@@ -42,7 +42,7 @@ int runLights(const LightsOptions& o) {
   if (tables.black) spdlog::warn("{}: the map is black; every light has rgb 0", o.input);
   const LightSet lights = generateLights(
       *map, tables, defaultSamplingPattern(map->layout).first(o.count), o.sampler);
-  const nlohmann::json frame = o.clusterQ ? clusteredFrameJson(lights, *o.clusterQ, map->layout, 0)
+  const nlohmann::ordered_json frame = o.clusterQ ? clusteredFrameJson(lights, *o.clusterQ, map->layout, 0)
                                           : frameJson(lights, 0);
   std::cout << (o.prettyJson ? frame.dump(2) : frame.dump()) << '\n';
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;

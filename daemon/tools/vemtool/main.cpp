@@ -17,8 +17,8 @@ int main(int argc, char** argv) {
   CLI::App app{"vemtool: directional lights from HDR environment maps, and tools (vemcast)"};
   app.require_subcommand(1);
   app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
-    return std::string("vemtool: error: ") + e.what() + " (see '" + failed->get_name() +
-           " --help')\n";
+    const std::string help = failed->get_parent() != nullptr ? "vemtool " + failed->get_name() : "vemtool";
+    return "vemtool: error: " + std::string(e.what()) + " (see '" + help + " --help')\n";
   });
   int exitCode = EXIT_SUCCESS;
   vem::tool::addLightsCommand(app, exitCode);
