@@ -41,37 +41,12 @@ double tentMarginalAt(const SamplingTables& t, double r) {
   return t.tentCdf[j] + a * x + 0.5 * (b - a) * x * x;
 }
 
-// The blended cumulative over columns at column edge x.
-struct ColumnBlend {
-  const SamplingTables* t;
-  RowBlend rows;
-  double w0, w1;  // (1 - t) and t times each row's pixel solid angle
-
-  [[nodiscard]] double at(int x) const {
-    const double f = x * t->floorY;
-    return w0 * (t->cumulativeY(rows.y0, x) + f) + w1 * (t->cumulativeY(rows.y1, x) + f);
-  }
-};
-
-ColumnBlend columnBlendAt(const SamplingTables& t, double r) {
+// The two rows whose cumulative masses blend at row coordinate r: weights (1 - t) and t, each
+// times its row's pixel solid angle.
+RowPair rowPairAt(const SamplingTables& t, double r) {
   const RowBlend rows = rowBlendAt(t, r);
-  return {&t, rows, (1 - rows.t) * t.pixelSolidAngleSr[std::size_t(rows.y0)],
+  return {rows.y0, (1 - rows.t) * t.pixelSolidAngleSr[std::size_t(rows.y0)], rows.y1,
           rows.t * t.pixelSolidAngleSr[std::size_t(rows.y1)]};
-}
-
-// Column coordinate xc where the blended cumulative reaches fraction `u` of its total.
-double invertColumns(const ColumnBlend& blend, double u) {
-  const int w = blend.t->width;
-  const double target = u * blend.at(w);
-  int lo = 0;
-  int hi = w;  // invariant: at(lo) <= target, and lo < hi
-  while (hi - lo > 1) {
-    const int mid = (lo + hi) / 2;
-    if (blend.at(mid) <= target) lo = mid; else hi = mid;
-  }
-  const double c0 = blend.at(lo);
-  const double c1 = blend.at(lo + 1);
-  return lo + std::clamp((target - c0) / (c1 - c0), 0.0, 1.0);
 }
 
 }  // namespace
@@ -86,7 +61,8 @@ RowBlend rowBlendAt(const SamplingTables& t, double r) {
 MapSample havranSample(const SamplingTables& t, glm::dvec2 square) {
   const CylinderPoint cylinder = cylinderFromSquare(t.layout, square);
   const double r = invertTentMarginal(t, cylinder.s * t.totalMass);
-  double xc = invertColumns(columnBlendAt(t, r), cylinder.w);
+  const RowPair rows = rowPairAt(t, r);
+  double xc = invertBlendedCumulative(t, rows, cylinder.w * blendedCumulative(t, rows, t.width));
   if (xc >= t.width) xc -= t.width;
   return {directionFromMapCoords(t, r, xc), r, xc};
 }
@@ -94,10 +70,8 @@ MapSample havranSample(const SamplingTables& t, glm::dvec2 square) {
 glm::dvec2 havranSquare(const SamplingTables& t, glm::dvec3 dir) {
   const MapCoords c = mapCoordsFromDirection(t, dir);
   const double u = tentMarginalAt(t, c.r) / t.totalMass;
-  const ColumnBlend blend = columnBlendAt(t, c.r);
-  const int x = std::clamp(int(c.xc), 0, t.width - 1);
-  const double cx = blend.at(x) + (c.xc - x) * (blend.at(x + 1) - blend.at(x));
-  double w = cx / blend.at(t.width);
+  const RowPair rows = rowPairAt(t, c.r);
+  double w = blendedCumulative(t, rows, c.xc) / blendedCumulative(t, rows, t.width);
   if (w >= 1) w -= 1;
   return squareFromCylinder(t.layout, {std::clamp(u, 0.0, 1.0), w});
 }
@@ -105,10 +79,10 @@ glm::dvec2 havranSquare(const SamplingTables& t, glm::dvec3 dir) {
 double havranPdfSr(const SamplingTables& t, glm::dvec3 dir) {
   if (t.layout == MapLayout::Hemisphere && dir.y < 0) return 0.0;
   const MapCoords c = mapCoordsFromDirection(t, dir);
-  const ColumnBlend blend = columnBlendAt(t, c.r);
+  const RowPair rows = rowPairAt(t, c.r);
   const int x = std::clamp(int(c.xc), 0, t.width - 1);
   // Joint density per unit r and unit psi: the blended mass of column x over its width 2 pi / W.
-  const double massPerColumn = blend.at(x + 1) - blend.at(x);
+  const double massPerColumn = rows.weight0 * t.pixelY(rows.row0, x) + rows.weight1 * t.pixelY(rows.row1, x);
   const double densityRPsi = massPerColumn / t.totalMass * t.width / kTwoPi;
   // d(omega) = (1 - cos theta_max) ds d(psi), and ds = (s_{y+1} - s_y) dr within row y.
   const int y = std::clamp(int(c.r), 0, t.height - 1);

@@ -29,12 +29,20 @@ namespace vem {
 
 inline constexpr double kFloorFraction = 1e-6;
 
+// Columns are summed in blocks of kColumnBlock: the per-pixel luminances are kept in float (the
+// pixel values themselves) and the sums at block edges in double, which halves the memory a frame
+// writes compared with a double cumulative per pixel, at the same precision.
+inline constexpr int kColumnBlock = 16;
+
 struct SamplingTables {
   MapLayout layout = MapLayout::Sphere;
   int width = 0;
   int height = 0;
-  // Per row y, the luminance summed over columns [0, x) at index y * (width + 1) + x (no floor).
-  std::vector<double> rowCumulativeY;
+  int blocksPerRow = 0;                   // ceil(width / kColumnBlock)
+  std::vector<float> pixelLuminance;      // per pixel, sanitised, no floor; row-major
+  // Per row y, the luminance summed over columns [0, kColumnBlock b) at y * (blocksPerRow + 1) + b,
+  // the last entry of a row being the whole row (no floor).
+  std::vector<double> blockCumulativeY;
   std::vector<double> pixelSolidAngleSr;  // per row
   std::vector<double> sEdges;             // height + 1 area coordinates of the row edges
   std::vector<double> rowMass;            // per row: solid angle x (luminance sum + width x floor)
@@ -49,16 +57,28 @@ struct SamplingTables {
   std::size_t badPixels = 0;  // pixels with a NaN, infinite or negative channel (counted as black)
   bool black = false;
 
-  [[nodiscard]] double cumulativeY(int y, int x) const {
-    return rowCumulativeY[std::size_t(y) * std::size_t(width + 1) + std::size_t(x)];
-  }
   // Luminance of column x in row y, floor included.
   [[nodiscard]] double pixelY(int y, int x) const {
-    return cumulativeY(y, x + 1) - cumulativeY(y, x) + floorY;
+    return double(pixelLuminance[std::size_t(y) * std::size_t(width) + std::size_t(x)]) + floorY;
   }
-  // Cumulative of row y at column coordinate xc in [0, W], floor included (linear within a pixel).
-  [[nodiscard]] double rowCumulativeAt(int y, double xc) const;
+  // Luminance of row y summed over columns [0, x), no floor (O(kColumnBlock)).
+  [[nodiscard]] double cumulativeY(int y, int x) const;
 };
+
+// Two rows blended with weights (per unit luminance, floor included): the Havran sampler's
+// conditional over columns between row centres, or one row alone (weight1 = 0) for the standard one.
+struct RowPair {
+  int row0 = 0;
+  double weight0 = 1.0;
+  int row1 = 0;
+  double weight1 = 0.0;
+};
+
+// The blended cumulative over columns [0, xc), xc in [0, W], linear within a pixel.
+[[nodiscard]] double blendedCumulative(const SamplingTables& tables, const RowPair& rows, double xc);
+// Its inverse: the column coordinate xc in [0, W] where it reaches `target` (clamped to the range).
+[[nodiscard]] double invertBlendedCumulative(const SamplingTables& tables, const RowPair& rows,
+                                             double target);
 
 // Builds the tables for `map`. `recycled` lends its storage (pass last frame's tables to avoid
 // allocating every frame); its contents are ignored.

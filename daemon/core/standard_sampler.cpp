@@ -8,16 +8,8 @@ namespace {
 
 // Column coordinate in row y where the row's cumulative reaches fraction v of its total.
 double invertRow(const SamplingTables& t, int y, double v) {
-  const double target = v * t.rowCumulativeAt(y, t.width);
-  int lo = 0;
-  int hi = t.width;
-  while (hi - lo > 1) {
-    const int mid = (lo + hi) / 2;
-    if (t.rowCumulativeAt(y, mid) <= target) lo = mid; else hi = mid;
-  }
-  const double c0 = t.rowCumulativeAt(y, lo);
-  const double c1 = t.rowCumulativeAt(y, lo + 1);
-  return lo + std::clamp((target - c0) / (c1 - c0), 0.0, 1.0);
+  const RowPair row{y, 1.0, y, 0.0};
+  return invertBlendedCumulative(t, row, v * blendedCumulative(t, row, t.width));
 }
 
 }  // namespace
@@ -37,7 +29,8 @@ glm::dvec2 standardSquare(const SamplingTables& t, glm::dvec3 dir) {
   const MapCoords c = mapCoordsFromDirection(t, dir);
   const int y = std::clamp(int(c.r), 0, t.height - 1);
   const double u = (t.boxCdf[std::size_t(y)] + (c.r - y) * t.rowMass[std::size_t(y)]) / t.totalMass;
-  const double v = t.rowCumulativeAt(y, c.xc) / t.rowCumulativeAt(y, t.width);
+  const RowPair row{y, 1.0, y, 0.0};
+  const double v = blendedCumulative(t, row, c.xc) / blendedCumulative(t, row, t.width);
   return {u, v};
 }
 
