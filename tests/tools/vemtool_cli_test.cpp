@@ -1,0 +1,142 @@
+// vemtool as a user meets it: the JSON it prints, and one clear error line for each kind of bad input.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <algorithm>
+#include <vector>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/env_map.h"
+#include "mapio/map_file.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ToolRun {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class VemtoolCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("vemtool_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  ToolRun run(const std::string& args) const {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+    const std::string command = std::string(VEMTOOL_PATH) + " " + args + " >" + out.string() + " 2>" +
+                                err.string();
+    const int status = std::system(command.c_str());
+    return {WEXITSTATUS(status), readFile(out), readFile(err)};
+  }
+  fs::path dir_;
+};
+
+int lineCount(const std::string& text) { return int(std::count(text.begin(), text.end(), '\n')); }
+
+TEST_F(VemtoolCli, LightsPrintsOneJsonFrameWithNUnitLightsInIdOrder) {
+  vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 64, 32, glm::vec3(1.0F));
+  ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "grey.pfm"));
+  const ToolRun r = run("lights --in " + (dir_ / "grey.pfm").string() + " --count 16");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  ASSERT_EQ(lineCount(r.out), 1);
+  const auto frame = nlohmann::json::parse(r.out);
+  EXPECT_EQ(frame["frame"], 0);
+  EXPECT_EQ(frame["count"], 16);
+  ASSERT_EQ(frame["lights"].size(), 16U);
+  double sumRed = 0;
+  for (std::size_t i = 0; i < 16; ++i) {
+    const auto& light = frame["lights"][i];
+    EXPECT_EQ(light["id"], i);
+    const double x = light["dir"][0], y = light["dir"][1], z = light["dir"][2];
+    EXPECT_NEAR(x * x + y * y + z * z, 1.0, 1e-6);
+    sumRed += double(light["rgb"][0]);
+  }
+  EXPECT_NEAR(sumRed, 4 * std::numbers::pi, 1e-4);  // a constant map of 1 over the sphere
+  EXPECT_EQ(r.out.find("\"frame\""), 1U) << "keys in the documented order";
+}
+
+TEST_F(VemtoolCli, MissingFileGivesOneErrorLineAndFails) {
+  const ToolRun r = run("lights --in " + (dir_ / "nothere.exr").string() + " --count 4");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("nothere.exr"), std::string::npos);
+  EXPECT_EQ(r.out, "");
+}
+
+TEST_F(VemtoolCli, UnreadableOrTruncatedFilesGiveOneErrorLineAndFail) {
+  std::ofstream(dir_ / "garbage.exr") << "this is not an OpenEXR file";
+  std::ofstream(dir_ / "truncated.pfm") << "PF\n2 1\n-1.0\nabc";  // OpenCV prints its own line here
+  std::ofstream(dir_ / "truncated.hdr") << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\nab";
+  for (const char* name : {"garbage.exr", "truncated.pfm", "truncated.hdr"}) {
+    const ToolRun r = run("lights --in " + (dir_ / name).string() + " --count 4");
+    EXPECT_NE(r.exitCode, 0) << name;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "") << name;
+  }
+}
+
+TEST_F(VemtoolCli, ZeroAbsurdOrMissingCountAndUnknownOptionsAreRefusedInOneLine) {
+  vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 8, 4, glm::vec3(1.0F));
+  ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "small.pfm"));
+  const std::string in = " --in " + (dir_ / "small.pfm").string();
+  const std::vector<std::string> cases{"lights" + in + " --count 0", "lights" + in + " --count 70000",
+                                      "lights" + in + " --count many", "lights" + in + " --bogus",
+                                      "lights" + in + " --sampler fancy", "lights --count 4",
+                                      "frobnicate"};
+  for (const std::string& args : cases) {
+    const ToolRun r = run(args);
+    EXPECT_NE(r.exitCode, 0) << args;
+    EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
+    EXPECT_EQ(r.out, "") << args;
+  }
+}
+
+TEST_F(VemtoolCli, NanInfAndNegativePixelsAreCountedInOneWarning) {
+  vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 8, 4, glm::vec3(1.0F));
+  map.set(1, 1, glm::vec3(std::numeric_limits<float>::quiet_NaN()));
+  map.set(2, 1, glm::vec3(std::numeric_limits<float>::infinity(), 1, 1));
+  map.set(3, 2, glm::vec3(1, -2, 1));
+  ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "bad.pfm"));
+  const ToolRun r = run("lights --in " + (dir_ / "bad.pfm").string() + " --count 8");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("3 pixels"), std::string::npos) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["count"], 8);
+}
+
+TEST_F(VemtoolCli, ClusterAddsMembersThatCoverEveryLightOnce) {
+  vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 64, 32, glm::vec3(1.0F));
+  ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "grey.pfm"));
+  const ToolRun r = run("lights --in " + (dir_ / "grey.pfm").string() + " --count 64 --cluster 8");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto frame = nlohmann::json::parse(r.out);
+  EXPECT_EQ(frame["clustered_from"], 64);
+  std::vector<int> seen(64, 0);
+  for (const auto& cluster : frame["lights"])
+    for (const auto& id : cluster["members"]) ++seen[std::size_t(id.get<int>())];
+  for (int count : seen) EXPECT_EQ(count, 1);
+  EXPECT_LT(frame["count"].get<int>(), 64);
+}
+
+}  // namespace
