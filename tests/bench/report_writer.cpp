@@ -47,7 +47,8 @@ void stageTable(std::ostringstream& md, const ReportInputs& in) {
       {"fir", "FIR, paper's 9 taps", "1000 for 210 lights"},
       {"clustering", "clustering (Q = 72)", "about 1000 for 300 lights"},
       {"regions", "angular regions (200), light lists", "under 1000"},
-      {"chain", "whole chain (all of the above, Havran)", "under 5000"}};
+      {"chain", "capture chain: tables, lights, FIR, clustering", "under 5000"},
+      {"chain_regions", "whole chain: the capture chain plus angular regions", "-"}};
   for (const auto& [key, label, paper] : rows) {
     md << "| " << label << " |";
     for (std::size_t i = 0; i < configs.size(); ++i) md << " " << timeCell(in, fmt::format("stage/{}/{}", key, i)) << " |";
@@ -58,8 +59,11 @@ void stageTable(std::ostringstream& md, const ReportInputs& in) {
     md << fmt::format(" {:.0f} |", 1e3 * double(configs[i].lights) / timeOf(in, fmt::format("stage/lights_havran/{}", i)));
   md << " 410 |\n\n";
   const double chain = timeOf(in, "stage/chain/1");
+  const double whole = timeOf(in, "stage/chain_regions/1");
   md << fmt::format("Target: the whole chain at 1024x256 with 1024 lights under 1000 us on one core: "
-                    "**{:.0f} us, {}**.\n\n", chain, chain < 1000 ? "met" : "NOT met");
+                    "**{:.0f} us with the angular regions, {}**; {:.0f} us for the capture chain "
+                    "alone (what vemd computes per frame; the renderer builds the regions).\n\n",
+                    whole, whole < 1000 ? "met" : "NOT met", chain);
 }
 
 void accuracyVersusTime(std::ostringstream& md, const ReportInputs& in,

@@ -65,18 +65,21 @@ void registerStageBenchmarks() {
     registerStage("regions", i, [p](benchmark::State& s) {
       for (auto _ : s) benchmark::DoNotOptimize(visibleLightLists(p->regions, p->lights));
     });
-    registerStage("chain", i, [p, pattern](benchmark::State& s) {
-      TemporalFilter filter(presetTaps(FilterPreset::Paper9));
-      std::uint64_t seq = 0;
-      for (auto _ : s) {
-        p->tables = buildSamplingTables(p->map, std::move(p->tables));
-        const LightSet raw = generateLights(p->map, p->tables, pattern, SamplerKind::Havran);
-        const FilterResult filtered = filter.push(seq++, raw);
-        const Clustering clusters = clusterLights(*filtered.lights, p->clustering);
-        benchmark::DoNotOptimize(visibleLightLists(p->regions, *filtered.lights));
-        benchmark::DoNotOptimize(clusters);
-      }
-    });
+    // The capture chain, what vemd does per frame: tables, lights, FIR, clustering; and the same
+    // plus the angular regions, which the renderer builds from each light set.
+    for (const bool withRegions : {false, true}) {
+      registerStage(withRegions ? "chain_regions" : "chain", i, [p, pattern, withRegions](benchmark::State& s) {
+        TemporalFilter filter(presetTaps(FilterPreset::Paper9));
+        std::uint64_t seq = 0;
+        for (auto _ : s) {
+          p->tables = buildSamplingTables(p->map, std::move(p->tables));
+          const LightSet raw = generateLights(p->map, p->tables, pattern, SamplerKind::Havran);
+          const FilterResult filtered = filter.push(seq++, raw);
+          benchmark::DoNotOptimize(clusterLights(*filtered.lights, p->clustering));
+          if (withRegions) benchmark::DoNotOptimize(visibleLightLists(p->regions, *filtered.lights));
+        }
+      });
+    }
   }
 }
 

@@ -13,18 +13,14 @@
 
 #include "core/cube_map_lookup.h"
 
+#include "support/random_directions.h"
+
 namespace vem {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-glm::dvec3 randomUnit(std::mt19937& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double y = 1.0 - 2.0 * unit(rng);
-  const double phi = 2.0 * kPi * unit(rng);
-  const double ring = std::sqrt(1.0 - y * y);
-  return {ring * std::cos(phi), y, ring * std::sin(phi)};
-}
+glm::dvec3 randomUnit(std::mt19937& rng) { return testing::randomUnitVector(rng); }
 
 LightSet randomLights(int n, std::uint32_t seed) {
   std::mt19937 rng(seed);

@@ -11,6 +11,8 @@
 #include <set>
 #include <vector>
 
+#include "support/random_directions.h"
+
 namespace vem {
 namespace {
 
@@ -38,13 +40,7 @@ LightSet haltonLights(std::uint32_t n) {
   return set;
 }
 
-glm::dvec3 randomUnit(std::mt19937& rng) {
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double y = 1.0 - 2.0 * unit(rng);
-  const double phi = 2.0 * kPi * unit(rng);
-  const double ring = std::sqrt(1.0 - y * y);
-  return {ring * std::cos(phi), y, ring * std::sin(phi)};
-}
+glm::dvec3 randomUnit(std::mt19937& rng) { return testing::randomUnitVector(rng); }
 
 double cosineTo(glm::dvec3 r, const Light& light) {
   return glm::dot(r, glm::normalize(glm::dvec3(light.dir)));
