@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -81,35 +83,32 @@ struct LeftPackTable {
   }
 };
 
-// Appends to `out` the lights within `limitRad` of `centre`, in light order. The test runs in float
+// Writes at `out` the indices of the lights within `limitRad` of `centre`, in light order, and
+// returns how many. `out` must have room for the light count rounded up to 8. The test runs in float
 // with kFloatDotSlack of slack toward inclusion, so it stays conservative. Branch-free: the tests
 // fill `keep` (vectorised), then each group of eight lights writes its kept indices at once through
 // a left-pack table (a serial compaction costs a dependent store per light).
-void appendLightsWithin(glm::dvec3 centre, const DirectionArrays& dirs, double limitRad,
-                        std::vector<std::uint8_t>& keep, std::vector<std::uint32_t>& out) {
+std::size_t writeLightsWithin(glm::dvec3 centre, const DirectionArrays& dirs, double limitRad,
+                              std::uint8_t* keep, std::uint32_t* out) {
   static const LeftPackTable pack;
   constexpr float kFloatDotSlack = 1e-5F;
   const float minDot = limitRad >= std::numbers::pi ? -2.0F : float(std::cos(limitRad)) - kFloatDotSlack;
   const float cx = float(centre.x), cy = float(centre.y), cz = float(centre.z);
   const std::size_t n = dirs.x.size();
-  const std::size_t padded = (n + 7) / 8 * 8;
-  keep.assign(padded, 0);
   const float* x = dirs.x.data();
   const float* y = dirs.y.data();
   const float* z = dirs.z.data();
-  std::uint8_t* k = keep.data();
-  for (std::size_t i = 0; i < n; ++i) k[i] = std::uint8_t(cx * x[i] + cy * y[i] + cz * z[i] > minDot);
-  std::size_t end = out.size();
-  out.resize(end + padded);
-  std::uint32_t* o = out.data();
-  for (std::size_t group = 0; group < padded; group += 8) {
-    unsigned mask = 0;
-    for (unsigned bit = 0; bit < 8; ++bit) mask |= unsigned(k[group + bit]) << bit;
+  for (std::size_t i = 0; i < n; ++i) keep[i] = std::uint8_t(cx * x[i] + cy * y[i] + cz * z[i] > minDot);
+  std::size_t end = 0;
+  for (std::size_t group = 0; group < n; group += 8) {
+    std::uint64_t bytes;  // eight 0/1 bytes; the multiply gathers them into one 8-bit mask
+    std::memcpy(&bytes, keep + group, sizeof bytes);
+    const unsigned mask = unsigned((bytes * 0x0102040810204080ULL) >> 56);
     const auto& positions = pack.positions[mask];
-    for (unsigned j = 0; j < 8; ++j) o[end + j] = std::uint32_t(group + positions[j]);
+    for (unsigned j = 0; j < 8; ++j) out[end + j] = std::uint32_t(group + positions[j]);
     end += pack.counts[mask];
   }
-  out.resize(end);
+  return end;
 }
 
 }  // namespace
@@ -153,16 +152,20 @@ double RegionLightLists::meanFraction(std::size_t lightCount) const {
 RegionLightLists regionLightLists(const AngularRegions& regions, std::span<const Light> lights,
                                   double reachRad) {
   const DirectionArrays dirs = directionArrays(lights);
-  std::vector<std::uint8_t> keep;
+  const std::size_t padded = (lights.size() + 7) / 8 * 8;
+  // Scratch without zero-filling: every list is written, then copied out once.
+  std::vector<std::uint8_t> keep(padded, 0);
+  const auto scratch = std::make_unique_for_overwrite<std::uint32_t[]>(regions.count() * padded + 8);
   RegionLightLists lists;
-  lists.lightIndices.reserve(regions.count() * lights.size() * 3 / 4);
   lists.offsets.reserve(regions.count() + 1);
   lists.offsets.push_back(0);
+  std::size_t end = 0;
   for (std::size_t i = 0; i < regions.count(); ++i) {
-    appendLightsWithin(regions.centres[i], dirs, regions.radiusRad[i] + reachRad, keep,
-                       lists.lightIndices);
-    lists.offsets.push_back(std::uint32_t(lists.lightIndices.size()));
+    end += writeLightsWithin(regions.centres[i], dirs, regions.radiusRad[i] + reachRad, keep.data(),
+                             scratch.get() + end);
+    lists.offsets.push_back(std::uint32_t(end));
   }
+  lists.lightIndices.assign(scratch.get(), scratch.get() + end);
   return lists;
 }
 

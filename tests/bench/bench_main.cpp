@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <string>
 
 #include <benchmark/benchmark.h>
@@ -20,21 +21,29 @@
 
 namespace {
 
-// Keeps each run's mean real time per iteration (microseconds) by benchmark name.
+// Keeps each benchmark's real time per iteration (microseconds) by name: the median of the
+// repetitions when there are several, else the single run's mean.
 class CapturingReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const Run& run : runs) {
-      if (run.run_type == Run::RT_Iteration && !run.error_occurred) {
-        const double toMicro = run.time_unit == benchmark::kMillisecond ? 1e3
-                               : run.time_unit == benchmark::kNanosecond ? 1e-3
-                                                                         : 1.0;
-        timesUs[run.benchmark_name()] = run.GetAdjustedRealTime() * toMicro;
+      if (run.error_occurred) continue;
+      const double toMicro = run.time_unit == benchmark::kMillisecond ? 1e3
+                             : run.time_unit == benchmark::kNanosecond ? 1e-3
+                                                                       : 1.0;
+      const double us = run.GetAdjustedRealTime() * toMicro;
+      const std::string name = run.run_name.str();
+      if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
+        timesUs[name] = us;
+        medians.insert(name);
+      } else if (run.run_type == Run::RT_Iteration && !medians.contains(name)) {
+        timesUs[name] = us;
       }
     }
     ConsoleReporter::ReportRuns(runs);
   }
   std::map<std::string, double> timesUs;
+  std::set<std::string> medians;
 };
 
 }  // namespace
