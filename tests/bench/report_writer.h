@@ -10,7 +10,8 @@
 namespace vem::bench {
 
 struct ReportInputs {
-  const std::map<std::string, double>& timesUs;  // benchmark name -> microseconds per iteration
+  const std::map<std::string, double>& timesUs;     // benchmark name -> microseconds (median)
+  const std::map<std::string, double>& minTimesUs;  // the fastest repetition, where measured
   std::vector<std::size_t> counts;               // the N of the accuracy study
 };
 

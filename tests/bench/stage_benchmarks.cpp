@@ -2,6 +2,7 @@
 // place them in its table: "stage/<stage>/<config index>".
 #include "stage_benchmarks.h"
 
+#include <algorithm>
 #include <functional>
 
 #include <benchmark/benchmark.h>
@@ -36,7 +37,8 @@ struct Pipeline {
 void registerStage(const std::string& stage, std::size_t index,
                    std::function<void(benchmark::State&)> body) {
   benchmark::RegisterBenchmark(fmt::format("stage/{}/{}", stage, index).c_str(), body)
-      ->Unit(benchmark::kMicrosecond);
+      ->Unit(benchmark::kMicrosecond)
+      ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
 }
 
 }  // namespace

@@ -39,7 +39,13 @@ void writeLogLogSvg(const std::filesystem::path& path, const std::string& xLabel
     for (auto [x, y] : series[i].points) points += fmt::format("{:.1f},{:.1f} ", px(x), py(y));
     const char* colour = kColours[i % 4];
     out << fmt::format("<polyline points='{}' fill='none' stroke='{}' stroke-width='2'/>\n", points, colour);
-    for (auto [x, y] : series[i].points) out << fmt::format("<circle cx='{:.1f}' cy='{:.1f}' r='3' fill='{}'/>\n", px(x), py(y), colour);
+    for (std::size_t k = 0; k < series[i].points.size(); ++k) {
+      const auto [x, y] = series[i].points[k];
+      out << fmt::format("<circle cx='{:.1f}' cy='{:.1f}' r='3' fill='{}'/>\n", px(x), py(y), colour);
+      if (k < series[i].labels.size())
+        out << fmt::format("<text x='{:.1f}' y='{:.1f}' fill='{}' font-size='10'>{}</text>\n",
+                           px(x) + 6, py(y) + (i == 0 ? -6 : 14), colour, series[i].labels[k]);
+    }
     out << fmt::format("<text x='{}' y='{}' fill='{}'>{}</text>\n", kWidth - kRight - 120, kTop + 16 + 16 * double(i), colour, series[i].name);
   }
   out << "</svg>\n";

@@ -12,6 +12,7 @@ namespace vem::bench {
 struct PlotSeries {
   std::string name;
   std::vector<std::pair<double, double>> points;  // (x, y), both > 0
+  std::vector<std::string> labels;                // optional, one per point (e.g. "N=64")
 };
 
 void writeLogLogSvg(const std::filesystem::path& path, const std::string& xLabel,
