@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
-#include <cstring>
-#include <memory>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <glm/geometric.hpp>
+#include <memory>
 #include <numbers>
 #include <span>
 
@@ -84,21 +84,23 @@ struct LeftPackTable {
 };
 
 // Writes at `out` the indices of the lights within `limitRad` of `centre`, in light order, and
-// returns how many. `out` must have room for the light count rounded up to 8. The test runs in float
-// with kFloatDotSlack of slack toward inclusion, so it stays conservative. Branch-free: the tests
-// fill `keep` (vectorised), then each group of eight lights writes its kept indices at once through
-// a left-pack table (a serial compaction costs a dependent store per light).
+// returns how many. `out` must have room for the light count rounded up to 8. The test runs in
+// float with kFloatDotSlack of slack toward inclusion, so it stays conservative. Branch-free: the
+// tests fill `keep` (vectorised), then each group of eight lights writes its kept indices at once
+// through a left-pack table (a serial compaction costs a dependent store per light).
 std::size_t writeLightsWithin(glm::dvec3 centre, const DirectionArrays& dirs, double limitRad,
                               std::uint8_t* keep, std::uint32_t* out) {
   static const LeftPackTable pack;
   constexpr float kFloatDotSlack = 1e-5F;
-  const float minDot = limitRad >= std::numbers::pi ? -2.0F : float(std::cos(limitRad)) - kFloatDotSlack;
+  const float minDot =
+      limitRad >= std::numbers::pi ? -2.0F : float(std::cos(limitRad)) - kFloatDotSlack;
   const float cx = float(centre.x), cy = float(centre.y), cz = float(centre.z);
   const std::size_t n = dirs.x.size();
   const float* x = dirs.x.data();
   const float* y = dirs.y.data();
   const float* z = dirs.z.data();
-  for (std::size_t i = 0; i < n; ++i) keep[i] = std::uint8_t(cx * x[i] + cy * y[i] + cz * z[i] > minDot);
+  for (std::size_t i = 0; i < n; ++i)
+    keep[i] = std::uint8_t(cx * x[i] + cy * y[i] + cz * z[i] > minDot);
   std::size_t end = 0;
   for (std::size_t group = 0; group < n; group += 8) {
     std::uint64_t bytes;  // eight 0/1 bytes; the multiply gathers them into one 8-bit mask
@@ -155,7 +157,8 @@ RegionLightLists regionLightLists(const AngularRegions& regions, std::span<const
   const std::size_t padded = (lights.size() + 7) / 8 * 8;
   // Scratch without zero-filling: every list is written, then copied out once.
   std::vector<std::uint8_t> keep(padded, 0);
-  const auto scratch = std::make_unique_for_overwrite<std::uint32_t[]>(regions.count() * padded + 8);
+  const auto scratch =
+      std::make_unique_for_overwrite<std::uint32_t[]>(regions.count() * padded + 8);
   RegionLightLists lists;
   lists.offsets.reserve(regions.count() + 1);
   lists.offsets.push_back(0);

@@ -17,18 +17,12 @@ struct FaceAxes {
 
 FaceAxes faceAxes(CubeFace face, glm::dvec3 d) {
   switch (face) {
-    case CubeFace::PosX:
-      return {-d.z, -d.y, d.x};
-    case CubeFace::NegX:
-      return {d.z, -d.y, -d.x};
-    case CubeFace::PosY:
-      return {d.x, d.z, d.y};
-    case CubeFace::NegY:
-      return {d.x, -d.z, -d.y};
-    case CubeFace::PosZ:
-      return {d.x, -d.y, d.z};
-    case CubeFace::NegZ:
-      return {-d.x, -d.y, -d.z};
+    case CubeFace::PosX: return {-d.z, -d.y, d.x};
+    case CubeFace::NegX: return {d.z, -d.y, -d.x};
+    case CubeFace::PosY: return {d.x, d.z, d.y};
+    case CubeFace::NegY: return {d.x, -d.z, -d.y};
+    case CubeFace::PosZ: return {d.x, -d.y, d.z};
+    case CubeFace::NegZ: return {-d.x, -d.y, -d.z};
   }
   return {0.0, 0.0, 1.0};
 }
@@ -58,24 +52,12 @@ glm::dvec3 directionFromCubeFaceCoord(const CubeFaceCoord& coord) {
   const double tc = 2.0 * coord.t - 1.0;
   glm::dvec3 d{0.0};
   switch (coord.face) {
-    case CubeFace::PosX:
-      d = {1.0, -tc, -sc};
-      break;
-    case CubeFace::NegX:
-      d = {-1.0, -tc, sc};
-      break;
-    case CubeFace::PosY:
-      d = {sc, 1.0, tc};
-      break;
-    case CubeFace::NegY:
-      d = {sc, -1.0, -tc};
-      break;
-    case CubeFace::PosZ:
-      d = {sc, -tc, 1.0};
-      break;
-    case CubeFace::NegZ:
-      d = {-sc, -tc, -1.0};
-      break;
+    case CubeFace::PosX: d = {1.0, -tc, -sc}; break;
+    case CubeFace::NegX: d = {-1.0, -tc, sc}; break;
+    case CubeFace::PosY: d = {sc, 1.0, tc}; break;
+    case CubeFace::NegY: d = {sc, -1.0, -tc}; break;
+    case CubeFace::PosZ: d = {sc, -tc, 1.0}; break;
+    case CubeFace::NegZ: d = {-sc, -tc, -1.0}; break;
   }
   return glm::normalize(d);
 }

@@ -1,6 +1,7 @@
-// The default sampling patterns shared by every frame and every process: the first kMaxLights points
-// of relaxedHaltonPattern (sampling_pattern.h) relaxed on each layout's surface, precomputed at build
-// time and embedded in the library. Light identity i is pattern point i; N lights use the first N.
+// The default sampling patterns shared by every frame and every process: the first kMaxLights
+// points of relaxedHaltonPattern (sampling_pattern.h) relaxed on each layout's surface, precomputed
+// at build time and embedded in the library. Light identity i is pattern point i; N lights use the
+// first N.
 #pragma once
 
 #include <cstddef>

@@ -5,7 +5,8 @@
 // - Angles: theta is measured from the zenith +Y; phi is the azimuth, and
 //     dir = (sin theta cos phi, cos theta, sin theta sin phi),
 //   so phi = 0 faces +X and phi = pi/2 faces +Z.
-// - MapLayout::Sphere is an equirectangular W x H map of the full sphere (HDRI files): the centre of
+// - MapLayout::Sphere is an equirectangular W x H map of the full sphere (HDRI files): the centre
+// of
 //   pixel (x, y) has u = (x + 0.5) / W, theta = pi (y + 0.5) / H, phi = 2 pi (u - 0.5).
 //   Row 0 is the zenith; the centre column faces +X; the left and right edges are phi = -pi = +pi.
 // - MapLayout::Hemisphere is the camera's polar map of the upper hemisphere: W columns over
@@ -33,9 +34,9 @@ enum class MapLayout { Sphere, Hemisphere };
 
 struct EnvMap {
   MapLayout layout = MapLayout::Sphere;
-  int width = 0;            // columns, over the azimuth
-  int height = 0;           // rows, over theta from the zenith
-  std::vector<float> rgb;   // width * height * 3 floats, row-major, row 0 at the zenith
+  int width = 0;           // columns, over the azimuth
+  int height = 0;          // rows, over theta from the zenith
+  std::vector<float> rgb;  // width * height * 3 floats, row-major, row 0 at the zenith
 
   [[nodiscard]] static EnvMap filled(MapLayout layout, int width, int height, glm::vec3 value);
 

@@ -8,7 +8,8 @@
 // - Frequencies are in Hz at the capture rate `rateHz` (frames per second), or in cycles per frame
 //   (Hz / rateHz, Nyquist = 0.5). Gains are amplitude ratios |H(f)| of the normalised taps.
 //   Delays are group delays in frames (x 1000 / rateHz for milliseconds).
-// - Designs are equiripple low-passes (Parks-McClellan, [OSB99] section 7.7) computed by liquid-dsp's
+// - Designs are equiripple low-passes (Parks-McClellan, [OSB99] section 7.7) computed by
+// liquid-dsp's
 //   firdespm with equal pass/stop weights; the tap count is odd so the linear-phase delay
 //   (K - 1) / 2 is a whole number of frames: the output then stands for a captured frame.
 //
@@ -57,13 +58,14 @@ struct LowPassSpec {
 inline constexpr int kMaxDesignTaps = 255;
 
 // Paper 004 section 3.3, w1..w9 as printed (they sum to 1.09245; normalise before use).
-inline constexpr std::array<double, 9> kPaperTapsRaw = {0.06216, 0.01296, -0.13816, 0.28315, 0.65223,
-                                                        0.28315, -0.13816, 0.01296, 0.06216};
+inline constexpr std::array<double, 9> kPaperTapsRaw = {
+    0.06216, 0.01296, -0.13816, 0.28315, 0.65223, 0.28315, -0.13816, 0.01296, 0.06216};
 // The edges the paper states for its design.
 inline constexpr BandEdgesHz kPaperStatedEdges{21.0, 7.0, 9.0};
 // The edges with which Parks-McClellan reproduces the published taps (measured; see the doc).
 inline constexpr BandEdgesHz kPaperEffectiveEdges{21.0, 5.88, 8.064};
-// The low-latency linear-phase preset: 5 taps, 2 frames of delay, its stop band at the paper's 9 Hz.
+// The low-latency linear-phase preset: 5 taps, 2 frames of delay, its stop band at the paper's 9
+// Hz.
 inline constexpr LowPassSpec kEquiripple5Spec{5, {21.0, 4.5, 9.0}};
 
 // One sentence naming what is wrong with `spec`, or nullopt when it can be designed:
@@ -115,6 +117,7 @@ struct FilterCharacteristics {
 
 // Pure measurement of `taps` at a capture rate and band edges (which must satisfy
 // 0 < pass < stop <= rate / 2).
-[[nodiscard]] FilterCharacteristics characteriseFilter(const FirTaps& taps, const BandEdgesHz& edges);
+[[nodiscard]] FilterCharacteristics characteriseFilter(const FirTaps& taps,
+                                                       const BandEdgesHz& edges);
 
 }  // namespace vem

@@ -20,7 +20,8 @@ double invertTentMarginal(const SamplingTables& t, double target) {
   const double delta = std::max(0.0, target - cdf[j]);
   const int h = t.height;
   if (j == 0) return std::min(0.5, delta / t.rowMass[0]);
-  if (j == std::size_t(h)) return std::min(double(h), h - 0.5 + delta / t.rowMass[std::size_t(h) - 1]);
+  if (j == std::size_t(h))
+    return std::min(double(h), h - 0.5 + delta / t.rowMass[std::size_t(h) - 1]);
   // Density rises linearly from a = rowMass[j-1] to b = rowMass[j] over one unit of r:
   // a x + (b - a) x^2 / 2 = delta, solved in the form that stays exact when a ~ b.
   const double a = t.rowMass[j - 1];
@@ -33,7 +34,9 @@ double invertTentMarginal(const SamplingTables& t, double target) {
 double tentMarginalAt(const SamplingTables& t, double r) {
   const int h = t.height;
   if (r <= 0.5) return std::max(0.0, r) * t.rowMass[0];
-  if (r >= h - 0.5) return t.tentCdf[std::size_t(h)] + (std::min(r, double(h)) - (h - 0.5)) * t.rowMass[std::size_t(h) - 1];
+  if (r >= h - 0.5)
+    return t.tentCdf[std::size_t(h)] +
+           (std::min(r, double(h)) - (h - 0.5)) * t.rowMass[std::size_t(h) - 1];
   const std::size_t j = std::size_t(r + 0.5);  // r in [j - 0.5, j + 0.5)
   const double x = r - (j - 0.5);
   const double a = t.rowMass[j - 1];
@@ -82,7 +85,8 @@ double havranPdfSr(const SamplingTables& t, glm::dvec3 dir) {
   const RowPair rows = rowPairAt(t, c.r);
   const int x = std::clamp(int(c.xc), 0, t.width - 1);
   // Joint density per unit r and unit psi: the blended mass of column x over its width 2 pi / W.
-  const double massPerColumn = rows.weight0 * t.pixelY(rows.row0, x) + rows.weight1 * t.pixelY(rows.row1, x);
+  const double massPerColumn =
+      rows.weight0 * t.pixelY(rows.row0, x) + rows.weight1 * t.pixelY(rows.row1, x);
   const double densityRPsi = massPerColumn / t.totalMass * t.width / kTwoPi;
   // d(omega) = (1 - cos theta_max) ds d(psi), and ds = (s_{y+1} - s_y) dr within row y.
   const int y = std::clamp(int(c.r), 0, t.height - 1);
@@ -97,8 +101,8 @@ BlendedPixel blendedPixelAt(const EnvMap& map, const SamplingTables& t, double r
   const double w0 = (1 - rows.t) * t.pixelSolidAngleSr[std::size_t(rows.y0)];
   const double w1 = rows.t * t.pixelSolidAngleSr[std::size_t(rows.y1)];
   const glm::dvec3 grey(t.floorY);
-  const glm::dvec3 rgb = w0 * (sanitizedRgb(map, x, rows.y0) + grey) +
-                         w1 * (sanitizedRgb(map, x, rows.y1) + grey);
+  const glm::dvec3 rgb =
+      w0 * (sanitizedRgb(map, x, rows.y0) + grey) + w1 * (sanitizedRgb(map, x, rows.y1) + grey);
   return {rgb, luminance(rgb)};
 }
 

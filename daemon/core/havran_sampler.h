@@ -4,11 +4,11 @@
 //
 // The warp: the disk radius rho gives u = rho^2 (uniform in area); u is inverted through the tent
 // marginal over the row coordinate r (SamplingTables::tentCdf, the row masses interpolated linearly
-// between row centres); the disk angle psi_d / 2 pi is inverted through the conditional over columns
-// at r, which is the linear interpolation of the two neighbouring rows' cumulative masses (weights
-// (1 - t) and t, each row weighted by its pixel solid angle). So the density sampled is the map's
-// importance interpolated linearly in r between row centres and constant within a column: a
-// continuous density, strictly positive thanks to the floor (sampling_tables.h), which makes the
+// between row centres); the disk angle psi_d / 2 pi is inverted through the conditional over
+// columns at r, which is the linear interpolation of the two neighbouring rows' cumulative masses
+// (weights (1 - t) and t, each row weighted by its pixel solid angle). So the density sampled is
+// the map's importance interpolated linearly in r between row centres and constant within a column:
+// a continuous density, strictly positive thanks to the floor (sampling_tables.h), which makes the
 // mapping continuous and bijective for any non-negative map, across the concentric map's diagonals,
 // at the pole and across the psi = 0 seam (the conditional tables wrap).
 // Equal-area disk to surface: s = u-shaped area coordinate; cos theta = 1 - s (hemisphere) or

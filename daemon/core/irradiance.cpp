@@ -31,13 +31,15 @@ std::vector<glm::dvec3> irradianceFromLights(std::span<const Light> lights,
   std::vector<glm::dvec3> result(normals.size(), glm::dvec3(0));
   for (const Light& light : lights) {
     for (std::size_t i = 0; i < normals.size(); ++i) {
-      result[i] += glm::dvec3(light.rgb) * std::max(0.0, glm::dot(normals[i], glm::dvec3(light.dir)));
+      result[i] +=
+          glm::dvec3(light.rgb) * std::max(0.0, glm::dot(normals[i], glm::dvec3(light.dir)));
     }
   }
   return result;
 }
 
-double relativeRmsError(std::span<const glm::dvec3> estimate, std::span<const glm::dvec3> reference) {
+double relativeRmsError(std::span<const glm::dvec3> estimate,
+                        std::span<const glm::dvec3> reference) {
   assert(estimate.size() == reference.size());
   double errorSq = 0;
   double referenceSq = 0;

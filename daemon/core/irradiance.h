@@ -1,6 +1,7 @@
 // Irradiance at a surface normal (world frame of env_map.h), for accuracy figures and tests:
 // E(n) = integral of L(w) max(0, n . w) dw, per channel.
-// - irradianceFromMap sums every pixel: L (sanitised) x pixel solid angle x max(0, n . pixel centre).
+// - irradianceFromMap sums every pixel: L (sanitised) x pixel solid angle x max(0, n . pixel
+// centre).
 //   This is the exact integral of the piecewise-constant map up to the cosine's variation within a
 //   pixel (second order in the pixel size), the reference for the lights.
 // - irradianceFromLights sums rgb_i max(0, n . dir_i).

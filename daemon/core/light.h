@@ -4,9 +4,10 @@
 //   (right-handed, +Y up).
 // - `rgb` is the light's irradiance contribution: radiance times solid angle (map units x sr), so
 //   a Lambertian surface with normal n receives E = sum_i rgb_i max(0, n . dir_i).
-// - `id` is the index of the sampling-pattern point the light came from: its identity across frames.
-//   A set from the sampler lists lights in id order, so its first k lights are exactly the k-light set
-//   (the progressive property, paper 004 section 3.2).
+// - `id` is the index of the sampling-pattern point the light came from: its identity across
+// frames.
+//   A set from the sampler lists lights in id order, so its first k lights are exactly the k-light
+//   set (the progressive property, paper 004 section 3.2).
 #pragma once
 
 #include <cstdint>

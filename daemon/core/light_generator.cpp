@@ -8,7 +8,8 @@ namespace vem {
 namespace {
 
 // The colour per unit luminance at a sample; grey where the map is black there.
-glm::dvec3 chromaAt(const EnvMap& map, const SamplingTables& t, const MapSample& s, SamplerKind kind) {
+glm::dvec3 chromaAt(const EnvMap& map, const SamplingTables& t, const MapSample& s,
+                    SamplerKind kind) {
   BlendedPixel p;
   if (kind == SamplerKind::Havran) {
     p = blendedPixelAt(map, t, s.r, s.xc);
@@ -35,8 +36,8 @@ LightSet generateLights(const EnvMap& map, const SamplingTables& t,
   set.lights.reserve(pattern.size());
   const double share = t.black ? 0.0 : t.luminanceSr / double(pattern.size());
   for (std::size_t i = 0; i < pattern.size(); ++i) {
-    const MapSample s = kind == SamplerKind::Havran ? havranSample(t, pattern[i])
-                                                    : standardSample(t, pattern[i]);
+    const MapSample s =
+        kind == SamplerKind::Havran ? havranSample(t, pattern[i]) : standardSample(t, pattern[i]);
     const glm::dvec3 rgb = share * chromaAt(map, t, s, kind);
     set.lights.push_back({std::uint32_t(i), glm::vec3(s.dir), glm::vec3(rgb)});
   }

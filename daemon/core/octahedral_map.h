@@ -4,11 +4,11 @@
 // less distortion near the south pole than a disk whose whole rim collapses to the nadir.
 //
 // Square (u, v) in [0, 1]^2, a = 2u - 1, b = 2v - 1, d = |a| + |b|: the inner diamond d <= 1 is
-// the upper hemisphere (centre = zenith), the four corner triangles the lower one (corners = nadir);
-// opposite halves of each square edge fold onto the same meridian.
-// Rather than a point on the sphere this returns the sampler's cylinder coordinates: the area
-// fraction from the zenith s = (1 - cos theta) / 2 in [0, 1] and the azimuth fraction
-// w = azimuth / 2 pi in [0, 1) (azimuth 0 along the square's +a half-axis, increasing toward +b).
+// the upper hemisphere (centre = zenith), the four corner triangles the lower one (corners =
+// nadir); opposite halves of each square edge fold onto the same meridian. Rather than a point on
+// the sphere this returns the sampler's cylinder coordinates: the area fraction from the zenith s =
+// (1 - cos theta) / 2 in [0, 1] and the azimuth fraction w = azimuth / 2 pi in [0, 1) (azimuth 0
+// along the square's +a half-axis, increasing toward +b).
 #pragma once
 
 #include <glm/vec2.hpp>

@@ -29,8 +29,9 @@ struct PointCloud {
 };
 
 template <class Vec>
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<
-    nanoflann::L2_Simple_Adaptor<double, PointCloud<Vec>>, PointCloud<Vec>, Vec::length(), std::size_t>;
+using KdTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud<Vec>>,
+                                        PointCloud<Vec>, Vec::length(), std::size_t>;
 
 // One Lloyd step for the points [first, last): each moves to the centroid of the density samples
 // nearest to it among points [0, last). `project` maps a mean back onto the domain.
@@ -75,7 +76,8 @@ std::vector<glm::dvec2> squareGrid(std::size_t count, int samplesPerPoint) {
   return grid;
 }
 
-// Evenly spread samples on the layout's surface (Fibonacci lattice; its upper half for the hemisphere).
+// Evenly spread samples on the layout's surface (Fibonacci lattice; its upper half for the
+// hemisphere).
 std::vector<glm::dvec3> surfaceSamples(MapLayout layout, std::size_t count, int samplesPerPoint) {
   const int wanted = int(std::size_t(samplesPerPoint) * count);
   if (layout == MapLayout::Sphere) return fibonacciSphere(wanted);
@@ -128,7 +130,8 @@ std::vector<glm::dvec2> haltonPoints(std::size_t count) {
 
 std::vector<glm::dvec2> relaxedHaltonPattern(std::size_t count, LloydOptions options) {
   std::vector<glm::dvec2> points = haltonPoints(count);
-  if (options.domain == RelaxationDomain::Surface) return relaxOnSurface(std::move(points), options);
+  if (options.domain == RelaxationDomain::Surface)
+    return relaxOnSurface(std::move(points), options);
   relaxLevels(
       points, options.iterations,
       [&](std::size_t last) { return squareGrid(last, options.samplesPerPoint); },

@@ -3,18 +3,18 @@
 // origin, index 0, is skipped) and is relaxed toward blue noise by Lloyd's method.
 //
 // Progressive relaxation, so that every prefix is itself a relaxed set and the first k points never
-// depend on how many follow: points are relaxed in doubling levels [2^(L-1), 2^L), each level moving
-// only its own points to the centroids of their Voronoi cells (cells among all points of index
-// < 2^L) while earlier levels stay fixed. Centroids are estimated from `samplesPerPoint` evenly
-// spread samples per point, nearest sites found through a kd-tree (nanoflann).
+// depend on how many follow: points are relaxed in doubling levels [2^(L-1), 2^L), each level
+// moving only its own points to the centroids of their Voronoi cells (cells among all points of
+// index < 2^L) while earlier levels stay fixed. Centroids are estimated from `samplesPerPoint`
+// evenly spread samples per point, nearest sites found through a kd-tree (nanoflann).
 //
 // Where the cells are measured:
 // - RelaxationDomain::Square: in the unit square itself (paper 004 relaxes there);
 // - RelaxationDomain::Surface: on the map's surface (sphere or hemisphere) reached through the
-//   sampler's equal-area parameterisation (surface_parameterization.h), with geodesic-like (chordal)
-//   distances, so the pattern is blue noise where the lights live; the points are mapped back to the
-//   square afterwards. This is the default: measured in docs/sampling.md, it gives the Havran sampler
-//   lower irradiance error than square relaxation.
+//   sampler's equal-area parameterisation (surface_parameterization.h), with geodesic-like
+//   (chordal) distances, so the pattern is blue noise where the lights live; the points are mapped
+//   back to the square afterwards. This is the default: measured in docs/sampling.md, it gives the
+//   Havran sampler lower irradiance error than square relaxation.
 // The patterns the lights use are precomputed at build time (default_pattern.h).
 #pragma once
 
@@ -45,6 +45,7 @@ struct LloydOptions {
 
 // The first `count` points of the progressive relaxed pattern. For count = 2^m the result is a
 // prefix of the result for any larger power of two (bit for bit).
-[[nodiscard]] std::vector<glm::dvec2> relaxedHaltonPattern(std::size_t count, LloydOptions options = {});
+[[nodiscard]] std::vector<glm::dvec2> relaxedHaltonPattern(std::size_t count,
+                                                           LloydOptions options = {});
 
 }  // namespace vem

@@ -111,7 +111,8 @@ void buildMarginals(SamplingTables& t) {
   for (int y = 0; y < h; ++y) {
     t.rowMass[std::size_t(y)] =
         t.pixelSolidAngleSr[std::size_t(y)] *
-        (t.blockCumulativeY[std::size_t(y) * std::size_t(t.blocksPerRow + 1) + std::size_t(t.blocksPerRow)] +
+        (t.blockCumulativeY[std::size_t(y) * std::size_t(t.blocksPerRow + 1) +
+                            std::size_t(t.blocksPerRow)] +
          t.width * t.floorY);
     t.boxCdf[std::size_t(y) + 1] = t.boxCdf[std::size_t(y)] + t.rowMass[std::size_t(y)];
   }
@@ -120,7 +121,8 @@ void buildMarginals(SamplingTables& t) {
   t.tentCdf[1] = 0.5 * t.rowMass[0];
   for (int j = 1; j < h; ++j) {
     t.tentCdf[std::size_t(j) + 1] =
-        t.tentCdf[std::size_t(j)] + 0.5 * (t.rowMass[std::size_t(j) - 1] + t.rowMass[std::size_t(j)]);
+        t.tentCdf[std::size_t(j)] +
+        0.5 * (t.rowMass[std::size_t(j) - 1] + t.rowMass[std::size_t(j)]);
   }
   t.tentCdf[std::size_t(h) + 1] = t.tentCdf[std::size_t(h)] + 0.5 * t.rowMass[std::size_t(h) - 1];
   t.totalMass = t.boxCdf[std::size_t(h)];
@@ -157,7 +159,8 @@ SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled) {
 
 double SamplingTables::cumulativeY(int y, int x) const {
   const int block = x / kColumnBlock;
-  double sum = blockCumulativeY[std::size_t(y) * std::size_t(blocksPerRow + 1) + std::size_t(block)];
+  double sum =
+      blockCumulativeY[std::size_t(y) * std::size_t(blocksPerRow + 1) + std::size_t(block)];
   const float* row = &pixelLuminance[std::size_t(y) * std::size_t(width)];
   for (int i = block * kColumnBlock; i < x; ++i) sum += double(row[i]);
   return sum;
@@ -175,8 +178,10 @@ double blendedAtBlock(const SamplingTables& t, const RowPair& rows, int block) {
   const std::size_t stride = std::size_t(t.blocksPerRow + 1);
   const int column = std::min(t.width, block * kColumnBlock);
   const double floorMass = column * t.floorY;
-  return rows.weight0 * (t.blockCumulativeY[std::size_t(rows.row0) * stride + std::size_t(block)] + floorMass) +
-         rows.weight1 * (t.blockCumulativeY[std::size_t(rows.row1) * stride + std::size_t(block)] + floorMass);
+  return rows.weight0 * (t.blockCumulativeY[std::size_t(rows.row0) * stride + std::size_t(block)] +
+                         floorMass) +
+         rows.weight1 *
+             (t.blockCumulativeY[std::size_t(rows.row1) * stride + std::size_t(block)] + floorMass);
 }
 
 }  // namespace
@@ -196,13 +201,17 @@ double invertBlendedCumulative(const SamplingTables& t, const RowPair& rows, dou
   if (!(target > 0)) return 0.0;
   while (hi - lo > 1) {
     const int mid = (lo + hi) / 2;
-    if (blendedAtBlock(t, rows, mid) <= target) lo = mid; else hi = mid;
+    if (blendedAtBlock(t, rows, mid) <= target)
+      lo = mid;
+    else
+      hi = mid;
   }
   double sum = blendedAtBlock(t, rows, lo);
   const int last = std::min(t.width, (lo + 1) * kColumnBlock);
   for (int x = lo * kColumnBlock; x < last; ++x) {
     const double mass = blendedPixel(t, rows, x);
-    if (sum + mass > target || x == last - 1) return x + std::clamp((target - sum) / mass, 0.0, 1.0);
+    if (sum + mass > target || x == last - 1)
+      return x + std::clamp((target - sum) / mass, 0.0, 1.0);
     sum += mass;
   }
   return double(t.width);

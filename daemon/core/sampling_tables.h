@@ -2,14 +2,14 @@
 // samplers invert (paper 004 section 3.1).
 //
 // Importance of a pixel = its Rec. 709 luminance times its solid angle (color.h, env_map.h).
-// A pixel with a NaN, infinite or negative channel counts as black (and is counted here so the shell
-// can warn once).
-// A grey floor of kFloorFraction times the map's mean luminance is added to every pixel's importance
-// (and, as grey, to its colour) so that the cumulative tables are strictly increasing for any
-// non-negative map: this is what makes the Havran mapping continuous and bijective everywhere, also
-// across black regions. Its effect on the lights' totals is kFloorFraction, relative.
-// An all-black map (no positive luminance anywhere) gets a uniform importance instead, so the lights
-// keep well-defined directions; `black` is set and the light generator then emits rgb exactly 0.
+// A pixel with a NaN, infinite or negative channel counts as black (and is counted here so the
+// shell can warn once). A grey floor of kFloorFraction times the map's mean luminance is added to
+// every pixel's importance (and, as grey, to its colour) so that the cumulative tables are strictly
+// increasing for any non-negative map: this is what makes the Havran mapping continuous and
+// bijective everywhere, also across black regions. Its effect on the lights' totals is
+// kFloorFraction, relative. An all-black map (no positive luminance anywhere) gets a uniform
+// importance instead, so the lights keep well-defined directions; `black` is set and the light
+// generator then emits rgb exactly 0.
 //
 // Coordinates: row coordinate r in [0, H] (row y spans [y, y + 1]) and column coordinate xc in
 // [0, W] (env_map.h). Within row y the area coordinate s = (1 - cos theta) / (1 - cos theta_max) is
@@ -38,8 +38,8 @@ struct SamplingTables {
   MapLayout layout = MapLayout::Sphere;
   int width = 0;
   int height = 0;
-  int blocksPerRow = 0;                   // ceil(width / kColumnBlock)
-  std::vector<float> pixelLuminance;      // per pixel, sanitised, no floor; row-major
+  int blocksPerRow = 0;               // ceil(width / kColumnBlock)
+  std::vector<float> pixelLuminance;  // per pixel, sanitised, no floor; row-major
   // Per row y, the luminance summed over columns [0, kColumnBlock b) at y * (blocksPerRow + 1) + b,
   // the last entry of a row being the whole row (no floor).
   std::vector<double> blockCumulativeY;
@@ -66,7 +66,8 @@ struct SamplingTables {
 };
 
 // Two rows blended with weights (per unit luminance, floor included): the Havran sampler's
-// conditional over columns between row centres, or one row alone (weight1 = 0) for the standard one.
+// conditional over columns between row centres, or one row alone (weight1 = 0) for the standard
+// one.
 struct RowPair {
   int row0 = 0;
   double weight0 = 1.0;
@@ -75,7 +76,8 @@ struct RowPair {
 };
 
 // The blended cumulative over columns [0, xc), xc in [0, W], linear within a pixel.
-[[nodiscard]] double blendedCumulative(const SamplingTables& tables, const RowPair& rows, double xc);
+[[nodiscard]] double blendedCumulative(const SamplingTables& tables, const RowPair& rows,
+                                       double xc);
 // Its inverse: the column coordinate xc in [0, W] where it reaches `target` (clamped to the range).
 [[nodiscard]] double invertBlendedCumulative(const SamplingTables& tables, const RowPair& rows,
                                              double target);
@@ -84,8 +86,8 @@ struct RowPair {
 // allocating every frame); its contents are ignored.
 [[nodiscard]] SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled = {});
 
-// The integral of the map's (sanitised) rgb over solid angle, per channel (map units x sr): what the
-// lights' rgb sum to. Not part of the per-frame tables (the lights need only the luminance).
+// The integral of the map's (sanitised) rgb over solid angle, per channel (map units x sr): what
+// the lights' rgb sum to. Not part of the per-frame tables (the lights need only the luminance).
 [[nodiscard]] glm::dvec3 radianceIntegralSr(const EnvMap& map);
 
 // A pixel's rgb, or 0 when a channel is NaN, infinite or negative.

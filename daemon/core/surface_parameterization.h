@@ -3,7 +3,8 @@
 // s = (1 - cos theta) / (1 - cos theta_max), and w in [0, 1) the azimuth fraction.
 // - Hemisphere (the camera's polar map): the concentric map to the unit disk (rho, psi), then
 //   s = rho^2 and w = psi / 2 pi, as in paper 004 section 3.1.
-// - Sphere: the equal-area octahedral map (octahedral_map.h); a disk whose rim collapsed to the nadir
+// - Sphere: the equal-area octahedral map (octahedral_map.h); a disk whose rim collapsed to the
+// nadir
 //   would be equal-area too, but its strata near the nadir are long slivers.
 // Both are continuous and equal-area: uniform points in the square are uniform on the surface.
 // The samplers then warp s and w through the map's cumulative tables; with a uniform map they land

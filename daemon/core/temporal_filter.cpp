@@ -31,7 +31,8 @@ void writeHeld(std::vector<T>& ring, std::optional<std::uint64_t> lastSeq, std::
     return;
   }
   const T held = ring[slotOf(*lastSeq, k)];
-  for (std::uint64_t missing = *lastSeq + 1; missing < seq; ++missing) ring[slotOf(missing, k)] = held;
+  for (std::uint64_t missing = *lastSeq + 1; missing < seq; ++missing)
+    ring[slotOf(missing, k)] = held;
   ring[slotOf(seq, k)] = value;
 }
 
@@ -71,7 +72,8 @@ FilterResult TemporalFilter::push(std::uint64_t seq, const LightSet& frame) {
   writeHeld(powers_, newestSeq_, seq, frame.luminanceSr);
   newestSeq_ = seq;
   slotsBack_.resize(taps_.size());
-  for (std::size_t back = 0; back < taps_.size(); ++back) slotsBack_[back] = slotBack(seq, back, taps_.size());
+  for (std::size_t back = 0; back < taps_.size(); ++back)
+    slotsBack_[back] = slotBack(seq, back, taps_.size());
 
   LightSet out;
   out.luminanceSr = filteredPower(seq);

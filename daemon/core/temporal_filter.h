@@ -1,19 +1,22 @@
-// TemporalFilter: the FIR low-pass over time that keeps each light's direction and the frame's total
-// power from flickering (paper 004 section 3.3, "Handling Dynamic Sequences").
+// TemporalFilter: the FIR low-pass over time that keeps each light's direction and the frame's
+// total power from flickering (paper 004 section 3.3, "Handling Dynamic Sequences").
 //
-// - Per light identity (Light::id) the filter keeps a ring of its last K directions, K = taps.size(),
+// - Per light identity (Light::id) the filter keeps a ring of its last K directions, K =
+// taps.size(),
 //   indexed by frame sequence number; one more ring keeps the frames' total power
 //   LightSet::luminanceSr (map units x sr). Slot of frame s: s % K. State over time is only this.
 // - Direction: dir = normalise(sum_k w_k dir(t - k)) in the world frame of env_map.h. When that
 //   weighted mean is shorter than kMinMeanLength (opposite directions cancel, e.g. an antipodal
 //   flip), the newest direction is used, so every output direction is a finite unit vector.
 // - Power: P = max(0, sum_k w_k P(t - k)). The taps sum to 1, so a constant power passes unchanged.
-//   Negative taps can push the sum below 0 for a few frames after a sudden drop: it is clamped to 0.
+//   Negative taps can push the sum below 0 for a few frames after a sudden drop: it is clamped to
+//   0.
 // - Colour: each light carries rgbPerPower = rgb / luminanceSr of its newest lit frame (its chroma
 //   times its share of the power, 1/N), and outputs rgb = P * rgbPerPower. For a set that keeps the
-//   LightSet contract (every light carries luminanceSr / N) this is (P / N) * chroma, and the output
-//   luminances sum to P. Each identity depends on its own input and the power only, so filtering the
-//   first k lights of every frame gives exactly the first k lights of the filtered output.
+//   LightSet contract (every light carries luminanceSr / N) this is (P / N) * chroma, and the
+//   output luminances sum to P. Each identity depends on its own input and the power only, so
+//   filtering the first k lights of every frame gives exactly the first k lights of the filtered
+//   output.
 // - A black frame (luminanceSr = 0) or an unlit light: its direction is meaningless, so the light
 //   holds its last direction and its last rgbPerPower while 0 enters the power ring. An id never
 //   seen lit has rgbPerPower 0: it stays dark until its first lit frame (no grey pop-in).
@@ -70,9 +73,9 @@ class TemporalFilter {
 
  private:
   struct Track {
-    std::optional<std::uint64_t> lastSeq;     // newest frame written into `dirs`
-    std::vector<glm::dvec3> dirs;             // ring of unit directions, slot seq % K
-    std::optional<glm::dvec3> rgbPerPower;    // from the newest lit frame
+    std::optional<std::uint64_t> lastSeq;   // newest frame written into `dirs`
+    std::vector<glm::dvec3> dirs;           // ring of unit directions, slot seq % K
+    std::optional<glm::dvec3> rgbPerPower;  // from the newest lit frame
   };
 
   // framePower: the input frame's luminanceSr; powerOut: the filtered power.
@@ -83,7 +86,7 @@ class TemporalFilter {
 
   FirTaps taps_;
   std::optional<std::uint64_t> newestSeq_;
-  std::vector<double> powers_;  // ring of frame powers (luminanceSr), slot seq % K
+  std::vector<double> powers_;          // ring of frame powers (luminanceSr), slot seq % K
   std::vector<Track> tracks_;           // indexed by light id (ids are pattern indices: dense)
   std::vector<std::size_t> slotsBack_;  // this frame's ring slot of frame seq - k, k = 0 .. K - 1
 };

@@ -43,8 +43,8 @@ std::filesystem::path temporarySibling(const std::filesystem::path& target) {
   static std::atomic<unsigned> count{0};
   const unsigned salt = std::random_device{}();
   // fmt rather than operator+ chains: GCC 12 at -O3 warns falsely (-Wrestrict) on the latter.
-  const std::string name = fmt::format(".{}.tmp-{}-{}-{}", target.filename().string(), ::getpid(),
-                                       count++, salt);
+  const std::string name =
+      fmt::format(".{}.tmp-{}-{}-{}", target.filename().string(), ::getpid(), count++, salt);
   return target.parent_path() / name;
 }
 

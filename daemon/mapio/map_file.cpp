@@ -56,16 +56,11 @@ std::expected<std::string, MapFileFailure> readFileStart(const std::filesystem::
 
 const char* mapFileErrorName(MapFileError error) {
   switch (error) {
-    case MapFileError::NotFound:
-      return "not found";
-    case MapFileError::Unreadable:
-      return "unreadable";
-    case MapFileError::UnsupportedFormat:
-      return "unsupported format";
-    case MapFileError::BadContents:
-      return "bad contents";
-    case MapFileError::WriteFailed:
-      return "write failed";
+    case MapFileError::NotFound: return "not found";
+    case MapFileError::Unreadable: return "unreadable";
+    case MapFileError::UnsupportedFormat: return "unsupported format";
+    case MapFileError::BadContents: return "bad contents";
+    case MapFileError::WriteFailed: return "write failed";
   }
   return "unknown";
 }

@@ -52,11 +52,13 @@ std::vector<PatternErrors> patternComparison(const std::vector<std::size_t>& cou
   const std::vector<std::pair<std::string, std::vector<glm::dvec2>>> patterns{
       {"Halton (no relaxation)", haltonPoints(most)},
       {"Halton + Lloyd in the square", relaxedHaltonPattern(most, square)},
-      {"Halton + Lloyd on the sphere (default)", {surface.begin(), surface.begin() + std::ptrdiff_t(most)}}};
+      {"Halton + Lloyd on the sphere (default)",
+       {surface.begin(), surface.begin() + std::ptrdiff_t(most)}}};
   const auto normals = fibonacciSphere(64);
   std::vector<PatternErrors> result;
   for (const auto& [name, points] : patterns) {
-    PatternErrors row{name, std::vector<double>(counts.size(), 0.0), std::vector<double>(counts.size(), 0.0)};
+    PatternErrors row{name, std::vector<double>(counts.size(), 0.0),
+                      std::vector<double>(counts.size(), 0.0)};
     for (const auto& [mapName, map] : sharedHdris()) {
       const SamplingTables tables = buildSamplingTables(map);
       const auto reference = irradianceFromMap(map, normals);
@@ -64,7 +66,8 @@ std::vector<PatternErrors> patternComparison(const std::vector<std::size_t>& cou
         const std::span<const glm::dvec2> pattern(points.data(), counts[k]);
         const double maps = double(sharedHdris().size());
         row.havranMean[k] += errorOf(map, tables, pattern, SamplerKind::Havran, reference) / maps;
-        row.standardMean[k] += errorOf(map, tables, pattern, SamplerKind::Standard, reference) / maps;
+        row.standardMean[k] +=
+            errorOf(map, tables, pattern, SamplerKind::Standard, reference) / maps;
       }
     }
     result.push_back(std::move(row));

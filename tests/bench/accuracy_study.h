@@ -1,5 +1,5 @@
-// Accuracy figures for the report: irradiance error of the lights against exact integration over the
-// shared HDRIs (64 Fibonacci normals, relative RMS, irradiance.h), per map and per N, for both
+// Accuracy figures for the report: irradiance error of the lights against exact integration over
+// the shared HDRIs (64 Fibonacci normals, relative RMS, irradiance.h), per map and per N, for both
 // samplers; and the same for three sampling patterns (Halton, Lloyd in the square, Lloyd on the
 // surface), to show what the relaxation buys.
 #pragma once
@@ -18,7 +18,8 @@ struct MapErrors {
 };
 
 // Relative RMS irradiance error on every shared HDRI, for each N (both samplers, default pattern).
-[[nodiscard]] std::vector<MapErrors> perMapErrors(const std::vector<std::size_t>& counts, MapLayout layout);
+[[nodiscard]] std::vector<MapErrors> perMapErrors(const std::vector<std::size_t>& counts,
+                                                  MapLayout layout);
 
 struct PatternErrors {
   std::string pattern;

@@ -7,10 +7,13 @@
 
 namespace vem::bench {
 
-std::string StageConfig::label() const { return fmt::format("{}x{}, {} lights", width, height, lights); }
+std::string StageConfig::label() const {
+  return fmt::format("{}x{}, {} lights", width, height, lights);
+}
 
 const std::vector<StageConfig>& stageConfigs() {
-  static const std::vector<StageConfig> configs{{360, 90, 300}, {1024, 256, 1024}, {2048, 512, 1024}};
+  static const std::vector<StageConfig> configs{
+      {360, 90, 300}, {1024, 256, 1024}, {2048, 512, 1024}};
   return configs;
 }
 

@@ -1,5 +1,5 @@
-// What the benchmarks run on: a polar sky map of a given size with its light pipeline state, and the
-// shared HDRIs for the accuracy figures.
+// What the benchmarks run on: a polar sky map of a given size with its light pipeline state, and
+// the shared HDRIs for the accuracy figures.
 #pragma once
 
 #include <string>

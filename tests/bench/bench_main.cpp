@@ -28,7 +28,7 @@ class CapturingReporter : public benchmark::ConsoleReporter {
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const Run& run : runs) {
       if (run.error_occurred) continue;
-      const double toMicro = run.time_unit == benchmark::kMillisecond ? 1e3
+      const double toMicro = run.time_unit == benchmark::kMillisecond  ? 1e3
                              : run.time_unit == benchmark::kNanosecond ? 1e-3
                                                                        : 1.0;
       const double us = run.GetAdjustedRealTime() * toMicro;

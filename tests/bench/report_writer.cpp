@@ -27,8 +27,9 @@ std::string timeCell(const ReportInputs& in, const std::string& name) {
   const auto it = in.timesUs.find(name);
   if (it == in.timesUs.end()) return "-";
   const auto fastest = in.minTimesUs.find(name);
-  return fastest == in.minTimesUs.end() ? fmt::format("{:.0f}", it->second)
-                                        : fmt::format("{:.0f} ({:.0f})", it->second, fastest->second);
+  return fastest == in.minTimesUs.end()
+             ? fmt::format("{:.0f}", it->second)
+             : fmt::format("{:.0f} ({:.0f})", it->second, fastest->second);
 }
 
 double timeOf(const ReportInputs& in, const std::string& name) {
@@ -38,8 +39,10 @@ double timeOf(const ReportInputs& in, const std::string& name) {
 
 void stageTable(std::ostringstream& md, const ReportInputs& in) {
   const auto& configs = stageConfigs();
-  md << "## Stage timings\n\nMicroseconds per frame, one thread: the median of 5 repetitions, and in "
-        "brackets the fastest. This is a shared virtual machine: the same binary's timings drift by up "
+  md << "## Stage timings\n\nMicroseconds per frame, one thread: the median of 5 repetitions, and "
+        "in "
+        "brackets the fastest. This is a shared virtual machine: the same binary's timings drift "
+        "by up "
         "to 30 % from one minute to the next, all stages together. Input: a procedural sky as the "
         "camera's polar (hemisphere) map.\n\n| stage |";
   for (const auto& c : configs) md << " " << c.label() << " |";
@@ -57,27 +60,32 @@ void stageTable(std::ostringstream& md, const ReportInputs& in) {
       {"chain_regions", "whole chain: the capture chain plus angular regions", "-"}};
   for (const auto& [key, label, paper] : rows) {
     md << "| " << label << " |";
-    for (std::size_t i = 0; i < configs.size(); ++i) md << " " << timeCell(in, fmt::format("stage/{}/{}", key, i)) << " |";
+    for (std::size_t i = 0; i < configs.size(); ++i)
+      md << " " << timeCell(in, fmt::format("stage/{}/{}", key, i)) << " |";
     md << " " << paper << " |\n";
   }
   md << "| samples per ms, Havran |";
   for (std::size_t i = 0; i < configs.size(); ++i)
-    md << fmt::format(" {:.0f} |", 1e3 * double(configs[i].lights) / timeOf(in, fmt::format("stage/lights_havran/{}", i)));
+    md << fmt::format(" {:.0f} |", 1e3 * double(configs[i].lights) /
+                                       timeOf(in, fmt::format("stage/lights_havran/{}", i)));
   md << " 410 |\n\n";
   const double chain = timeOf(in, "stage/chain/1");
   const double whole = timeOf(in, "stage/chain_regions/1");
   const auto fastest = in.minTimesUs.find("stage/chain_regions/1");
-  md << fmt::format("Target: the whole chain at 1024x256 with 1024 lights under 1000 us on one core: "
-                    "median **{:.0f} us with the angular regions, {}** (fastest repetition {:.0f} us); "
-                    "{:.0f} us for the capture chain alone (what vemd computes per frame; the "
-                    "renderer builds the regions).\n\n",
-                    whole, whole < 1000 ? "met" : "NOT met",
-                    fastest == in.minTimesUs.end() ? whole : fastest->second, chain);
+  md << fmt::format(
+      "Target: the whole chain at 1024x256 with 1024 lights under 1000 us on one core: "
+      "median **{:.0f} us with the angular regions, {}** (fastest repetition {:.0f} us); "
+      "{:.0f} us for the capture chain alone (what vemd computes per frame; the "
+      "renderer builds the regions).\n\n",
+      whole, whole < 1000 ? "met" : "NOT met",
+      fastest == in.minTimesUs.end() ? whole : fastest->second, chain);
 }
 
 void accuracyVersusTime(std::ostringstream& md, const ReportInputs& in,
-                        const std::vector<MapErrors>& sphere, const std::filesystem::path& docsDir) {
-  md << "## Accuracy against time\n\nThe 18 shared HDRIs (512x256, full sphere). Error: relative RMS "
+                        const std::vector<MapErrors>& sphere,
+                        const std::filesystem::path& docsDir) {
+  md << "## Accuracy against time\n\nThe 18 shared HDRIs (512x256, full sphere). Error: relative "
+        "RMS "
         "of the irradiance from the lights at 64 Fibonacci normals against exact integration over "
         "the map, mean over the maps. Time: importance tables plus N lights, per frame.\n\n"
         "| N | Havran error | Havran time (us) | standard error | standard time (us) |\n"
@@ -97,8 +105,8 @@ void accuracyVersusTime(std::ostringstream& md, const ReportInputs& in,
     havran.labels.push_back(fmt::format("N={}", in.counts[k]));
     standard.labels.push_back(fmt::format("N={}", in.counts[k]));
   }
-  writeLogLogSvg(docsDir / "accuracy-vs-time.svg", "time per frame (us)", "irradiance error (relative RMS)",
-                 {havran, standard});
+  writeLogLogSvg(docsDir / "accuracy-vs-time.svg", "time per frame (us)",
+                 "irradiance error (relative RMS)", {havran, standard});
   md << "\n![accuracy against time](accuracy-vs-time.svg)\n\n";
 }
 
@@ -118,20 +126,24 @@ void perMapTable(std::ostringstream& md, const std::vector<MapErrors>& rows,
       wins[k] += win ? 1 : 0;
       meanH[k] += row.havran[k] / double(rows.size());
       meanS[k] += row.standard[k] / double(rows.size());
-      md << fmt::format(" {}{:.4f}{} | {:.4f} |", win ? "**" : "", row.havran[k], win ? "**" : "", row.standard[k]);
+      md << fmt::format(" {}{:.4f}{} | {:.4f} |", win ? "**" : "", row.havran[k], win ? "**" : "",
+                        row.standard[k]);
     }
     md << "\n";
   }
   md << "| mean |";
-  for (std::size_t k = 0; k < counts.size(); ++k) md << fmt::format(" {:.4f} | {:.4f} |", meanH[k], meanS[k]);
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    md << fmt::format(" {:.4f} | {:.4f} |", meanH[k], meanS[k]);
   md << "\n| Havran at or below standard |";
-  for (std::size_t k = 0; k < counts.size(); ++k) md << fmt::format(" {} of {} | |", wins[k], rows.size());
+  for (std::size_t k = 0; k < counts.size(); ++k)
+    md << fmt::format(" {} of {} | |", wins[k], rows.size());
   md << "\n\n";
 }
 
 void patternTable(std::ostringstream& md, const std::vector<PatternErrors>& rows,
                   const std::vector<std::size_t>& counts) {
-  md << "## Sampling pattern\n\nMean irradiance error over the 18 HDRIs (sphere) for three patterns "
+  md << "## Sampling pattern\n\nMean irradiance error over the 18 HDRIs (sphere) for three "
+        "patterns "
         "fed to both samplers.\n\n| pattern |";
   for (std::size_t n : counts) md << " Havran " << n << " | standard " << n << " |";
   md << "\n|---|";
@@ -139,7 +151,8 @@ void patternTable(std::ostringstream& md, const std::vector<PatternErrors>& rows
   md << "\n";
   for (const auto& row : rows) {
     md << "| " << row.pattern << " |";
-    for (std::size_t k = 0; k < counts.size(); ++k) md << fmt::format(" {:.4f} | {:.4f} |", row.havranMean[k], row.standardMean[k]);
+    for (std::size_t k = 0; k < counts.size(); ++k)
+      md << fmt::format(" {:.4f} | {:.4f} |", row.havranMean[k], row.standardMean[k]);
     md << "\n";
   }
   md << "\n";
@@ -157,11 +170,14 @@ std::string writeReport(const ReportInputs& in, const std::filesystem::path& doc
   const auto sphere = perMapErrors(in.counts, MapLayout::Sphere);
   accuracyVersusTime(md, in, sphere, docsDir);
   const std::vector<std::size_t> tableCounts{64, 256, 1024};
-  md << "## Accuracy per map\n\nRelative RMS irradiance error at 64 normals; bold where Havran's is at "
+  md << "## Accuracy per map\n\nRelative RMS irradiance error at 64 normals; bold where Havran's "
+        "is at "
         "or below the standard sampler's. The hemisphere table uses each map's upper half as the "
         "camera's polar map.\n\n";
-  perMapTable(md, perMapErrors(tableCounts, MapLayout::Sphere), tableCounts, "Full sphere (equirectangular)");
-  perMapTable(md, perMapErrors(tableCounts, MapLayout::Hemisphere), tableCounts, "Upper hemisphere (polar)");
+  perMapTable(md, perMapErrors(tableCounts, MapLayout::Sphere), tableCounts,
+              "Full sphere (equirectangular)");
+  perMapTable(md, perMapErrors(tableCounts, MapLayout::Hemisphere), tableCounts,
+              "Upper hemisphere (polar)");
   patternTable(md, patternComparison(tableCounts), tableCounts);
   return md.str();
 }

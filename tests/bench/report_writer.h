@@ -12,10 +12,11 @@ namespace vem::bench {
 struct ReportInputs {
   const std::map<std::string, double>& timesUs;     // benchmark name -> microseconds (median)
   const std::map<std::string, double>& minTimesUs;  // the fastest repetition, where measured
-  std::vector<std::size_t> counts;               // the N of the accuracy study
+  std::vector<std::size_t> counts;                  // the N of the accuracy study
 };
 
 // The markdown text; writes accuracy-vs-time.svg into `docsDir`.
-[[nodiscard]] std::string writeReport(const ReportInputs& inputs, const std::filesystem::path& docsDir);
+[[nodiscard]] std::string writeReport(const ReportInputs& inputs,
+                                      const std::filesystem::path& docsDir);
 
 }  // namespace vem::bench

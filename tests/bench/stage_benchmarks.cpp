@@ -38,7 +38,9 @@ void registerStage(const std::string& stage, std::size_t index,
                    std::function<void(benchmark::State&)> body) {
   benchmark::RegisterBenchmark(fmt::format("stage/{}/{}", stage, index).c_str(), body)
       ->Unit(benchmark::kMicrosecond)
-      ->ComputeStatistics("min", [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); });
+      ->ComputeStatistics("min", [](const std::vector<double>& v) {
+        return *std::min_element(v.begin(), v.end());
+      });
 }
 
 }  // namespace
@@ -52,9 +54,11 @@ void registerStageBenchmarks() {
       for (auto _ : s) p->tables = buildSamplingTables(p->map, std::move(p->tables));
     });
     for (SamplerKind kind : {SamplerKind::Havran, SamplerKind::Standard}) {
-      registerStage(std::string("lights_") + samplerName(kind), i, [p, pattern, kind](benchmark::State& s) {
-        for (auto _ : s) benchmark::DoNotOptimize(generateLights(p->map, p->tables, pattern, kind));
-      });
+      registerStage(std::string("lights_") + samplerName(kind), i,
+                    [p, pattern, kind](benchmark::State& s) {
+                      for (auto _ : s)
+                        benchmark::DoNotOptimize(generateLights(p->map, p->tables, pattern, kind));
+                    });
     }
     registerStage("fir", i, [p](benchmark::State& s) {
       TemporalFilter filter(presetTaps(FilterPreset::Paper9));
@@ -70,17 +74,20 @@ void registerStageBenchmarks() {
     // The capture chain, what vemd does per frame: tables, lights, FIR, clustering; and the same
     // plus the angular regions, which the renderer builds from each light set.
     for (const bool withRegions : {false, true}) {
-      registerStage(withRegions ? "chain_regions" : "chain", i, [p, pattern, withRegions](benchmark::State& s) {
-        TemporalFilter filter(presetTaps(FilterPreset::Paper9));
-        std::uint64_t seq = 0;
-        for (auto _ : s) {
-          p->tables = buildSamplingTables(p->map, std::move(p->tables));
-          const LightSet raw = generateLights(p->map, p->tables, pattern, SamplerKind::Havran);
-          const FilterResult filtered = filter.push(seq++, raw);
-          benchmark::DoNotOptimize(clusterLights(*filtered.lights, p->clustering));
-          if (withRegions) benchmark::DoNotOptimize(visibleLightLists(p->regions, *filtered.lights));
-        }
-      });
+      registerStage(withRegions ? "chain_regions" : "chain", i,
+                    [p, pattern, withRegions](benchmark::State& s) {
+                      TemporalFilter filter(presetTaps(FilterPreset::Paper9));
+                      std::uint64_t seq = 0;
+                      for (auto _ : s) {
+                        p->tables = buildSamplingTables(p->map, std::move(p->tables));
+                        const LightSet raw =
+                            generateLights(p->map, p->tables, pattern, SamplerKind::Havran);
+                        const FilterResult filtered = filter.push(seq++, raw);
+                        benchmark::DoNotOptimize(clusterLights(*filtered.lights, p->clustering));
+                        if (withRegions)
+                          benchmark::DoNotOptimize(visibleLightLists(p->regions, *filtered.lights));
+                      }
+                    });
     }
   }
 }

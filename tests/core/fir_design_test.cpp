@@ -59,14 +59,14 @@ TEST(FirDesign, ParksMcClellanAtThePaperStatedEdgesGivesScipysTapsNotThePapers) 
 TEST(FirDesign, DesignerRejectsEdgesItCannotDesign) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::array<LowPassSpec, 8> invalid = {{
-      {9, {21.0, 9.0, 9.0}},    // pass == stop
-      {9, {21.0, 9.5, 9.0}},    // pass > stop
-      {9, {21.0, 7.0, 10.5}},   // stop at half the rate
-      {9, {21.0, 0.0, 9.0}},    // pass at 0
-      {8, {21.0, 7.0, 9.0}},    // even tap count
-      {1, {21.0, 7.0, 9.0}},    // too few taps
-      {9, {0.0, 7.0, 9.0}},     // no rate
-      {9, {nan, 7.0, 9.0}},     // not a rate
+      {9, {21.0, 9.0, 9.0}},   // pass == stop
+      {9, {21.0, 9.5, 9.0}},   // pass > stop
+      {9, {21.0, 7.0, 10.5}},  // stop at half the rate
+      {9, {21.0, 0.0, 9.0}},   // pass at 0
+      {8, {21.0, 7.0, 9.0}},   // even tap count
+      {1, {21.0, 7.0, 9.0}},   // too few taps
+      {9, {0.0, 7.0, 9.0}},    // no rate
+      {9, {nan, 7.0, 9.0}},    // not a rate
   }};
   for (const LowPassSpec& spec : invalid) {
     EXPECT_TRUE(describeInvalid(spec).has_value()) << spec.tapCount << " " << spec.edges.passHz;
@@ -102,7 +102,7 @@ TEST(FirDesign, PaperFilterHalvesSevenHertzAndHasAFourFrameDelay) {
       characteriseFilter(presetTaps(FilterPreset::Paper9), kPaperStatedEdges);
   EXPECT_NEAR(c.delayFrames, 4.0, 1e-12);
   EXPECT_NEAR(c.delaySpreadFrames, 0.0, 1e-9);
-  EXPECT_NEAR(c.passGain, 0.431, 2e-3);         // 0.47 before normalising: not a 7 Hz pass edge
+  EXPECT_NEAR(c.passGain, 0.431, 2e-3);  // 0.47 before normalising: not a 7 Hz pass edge
   EXPECT_NEAR(c.passGain * 1.09245, 0.47, 5e-3);
   EXPECT_GT(c.stopGainMax, 0.05);
   EXPECT_LT(c.stopGainMax, 0.1);

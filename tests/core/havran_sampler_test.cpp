@@ -1,5 +1,5 @@
-// Havran's inverse transform: round trips, bijectivity, continuity (diagonals, seam, pole, equator),
-// chi-square against its own density, and the standard sampler's row jumps it avoids.
+// Havran's inverse transform: round trips, bijectivity, continuity (diagonals, seam, pole,
+// equator), chi-square against its own density, and the standard sampler's row jumps it avoids.
 #include "core/havran_sampler.h"
 
 #include <cmath>
@@ -90,7 +90,7 @@ TEST(HavranSampler, StaysContinuousAcrossDiagonalsSeamAndEquator) {
     if (std::string(name) == "hot pixel") continue;  // Lipschitz constant ~1e5 there; see below
     const SamplingTables t = buildSamplingTables(map);
     const auto lines = {
-        std::tuple{glm::dvec2(0.51, 0.51), glm::dvec2(0.99, 0.99), diagonal},      // diagonal
+        std::tuple{glm::dvec2(0.51, 0.51), glm::dvec2(0.99, 0.99), diagonal},  // diagonal
         std::tuple{glm::dvec2(0.01, 0.99), glm::dvec2(0.49, 0.51), diagonal * -1.0},
         std::tuple{glm::dvec2(0.51, 0.5), glm::dvec2(0.99, 0.5), glm::dvec2(0, 1)},  // psi = 0 seam
         std::tuple{glm::dvec2(0.5, 0.02), glm::dvec2(0.98, 0.5), glm::dvec2(1, 1) / std::sqrt(2.0)},
@@ -137,8 +137,8 @@ TEST(HavranSampler, DensityIntegratesToOneAndMatchesItsSamplesByChiSquare) {
     const auto result = testing::chiSquareTest(
         t, [&](glm::dvec2 p) { return havranSample(t, p).dir; }, density, 400000, 2, 4);
     EXPECT_TRUE(result.passes()) << name << " " << layoutName(map.layout) << ": chi2 "
-                                 << result.statistic << " > " << result.criticalValue
-                                 << " (dof " << result.degreesOfFreedom << ")";
+                                 << result.statistic << " > " << result.criticalValue << " (dof "
+                                 << result.degreesOfFreedom << ")";
   }
 }
 

@@ -1,5 +1,5 @@
-// Lights from maps: white furnace, energy sums, the progressive prefix, and the hard cases that must
-// stay numerically stable (black map, a sun-like hot pixel of 1e8 over 1e-3 at the zenith, the
+// Lights from maps: white furnace, energy sums, the progressive prefix, and the hard cases that
+// must stay numerically stable (black map, a sun-like hot pixel of 1e8 over 1e-3 at the zenith, the
 // horizon and the seam, NaN/Inf/negative pixels, a 4096 x 2048 map, N = 1 and N = 65536).
 #include "core/light_generator.h"
 
@@ -99,7 +99,8 @@ TEST(LightGenerator, EveryLightCarriesAnEqualShareOfLuminance) {
   const EnvMap map = testing::proceduralSky(MapLayout::Sphere, 256, 128);
   for (SamplerKind kind : kBoth) {
     const LightSet set = lightsFor(map, 300, kind);
-    for (const Light& l : set.lights) EXPECT_NEAR(luminance(l.rgb), set.luminanceSr / 300, 1e-5 * set.luminanceSr / 300);
+    for (const Light& l : set.lights)
+      EXPECT_NEAR(luminance(l.rgb), set.luminanceSr / 300, 1e-5 * set.luminanceSr / 300);
   }
 }
 
@@ -127,13 +128,16 @@ struct HotPixelCase {
 TEST(HardCases, SunLikeHotPixelGetsAlmostAllLightsAndTheSumsStayRight) {
   const int w = 512, hs = 256, hh = 128;
   const HotPixelCase cases[] = {
-      {"zenith", MapLayout::Sphere, 100, 0},        {"horizon", MapLayout::Hemisphere, 100, hh - 1},
-      {"seam left", MapLayout::Sphere, 0, 90},      {"seam right", MapLayout::Sphere, w - 1, 90},
-      {"phi 0 polar", MapLayout::Hemisphere, 0, 40}, {"nadir", MapLayout::Sphere, 300, hs - 1},
+      {"zenith", MapLayout::Sphere, 100, 0},
+      {"horizon", MapLayout::Hemisphere, 100, hh - 1},
+      {"seam left", MapLayout::Sphere, 0, 90},
+      {"seam right", MapLayout::Sphere, w - 1, 90},
+      {"phi 0 polar", MapLayout::Hemisphere, 0, 40},
+      {"nadir", MapLayout::Sphere, 300, hs - 1},
   };
   for (const auto& c : cases) {
-    const EnvMap map = testing::hotPixelMap(c.layout, w, c.layout == MapLayout::Sphere ? hs : hh, c.x,
-                                            c.y, 1e8F, 1e-3F);
+    const EnvMap map = testing::hotPixelMap(c.layout, w, c.layout == MapLayout::Sphere ? hs : hh,
+                                            c.x, c.y, 1e8F, 1e-3F);
     const glm::dvec3 sunDir = pixelCentreDirection(map, c.x, c.y);
     for (SamplerKind kind : kBoth) {
       const LightSet set = lightsFor(map, 1024, kind);
@@ -145,7 +149,8 @@ TEST(HardCases, SunLikeHotPixelGetsAlmostAllLightsAndTheSumsStayRight) {
       // Every light that carries the sun lies within two pixel rows of it.
       int nearSun = 0;
       for (const Light& l : set.lights) {
-        nearSun += glm::dot(glm::dvec3(l.dir), sunDir) > std::cos(3.0 * std::numbers::pi / hs) ? 1 : 0;
+        nearSun +=
+            glm::dot(glm::dvec3(l.dir), sunDir) > std::cos(3.0 * std::numbers::pi / hs) ? 1 : 0;
       }
       EXPECT_GE(nearSun, 1020) << what;
     }
@@ -163,8 +168,10 @@ TEST(HardCases, NanInfAndNegativePixelsCountAsZeroAndAreCounted) {
   for (SamplerKind kind : kBoth) {
     const LightSet set = lightsFor(map, 256, kind);
     expectWellFormed(set, samplerName(kind));
-    EXPECT_NEAR(rgbSum(set).x, radianceIntegralSr(map).x, 1e-3 * radianceIntegralSr(map).x);  // to sampling accuracy
-    EXPECT_LT(radianceIntegralSr(map).x, 4 * std::numbers::pi);  // the bad channels really count as zero
+    EXPECT_NEAR(rgbSum(set).x, radianceIntegralSr(map).x,
+                1e-3 * radianceIntegralSr(map).x);  // to sampling accuracy
+    EXPECT_LT(radianceIntegralSr(map).x,
+              4 * std::numbers::pi);  // the bad channels really count as zero
   }
 }
 
@@ -176,8 +183,8 @@ TEST(HardCases, LargeMapWithSunKeepsTheSkyThatFloatSumsWouldLose) {
   const SamplingTables t = buildSamplingTables(map);
   const double skyBehindSun = t.cumulativeY(700, 4096) - t.cumulativeY(700, 1001);
   EXPECT_NEAR(skyBehindSun, 1e-3 * (4096 - 1001), 1e-4);
-  const LightSet set = generateLights(map, t, defaultSamplingPattern(map.layout).first(4096),
-                                      SamplerKind::Havran);
+  const LightSet set =
+      generateLights(map, t, defaultSamplingPattern(map.layout).first(4096), SamplerKind::Havran);
   expectWellFormed(set, "4096x2048");
   EXPECT_NEAR(rgbSum(set).y / radianceIntegralSr(map).y, 1.0, 1e-5);
 }

@@ -76,8 +76,8 @@ TEST(SamplingPattern, RelaxationSpreadsPointsFartherApartThanHaltonOnTheSurface)
     for (std::size_t n : {64U, 256U, 1024U}) {
       const Spacing r = normalisedSpacing(relaxed, n, layout);
       const Spacing h = normalisedSpacing(halton, n, layout);
-      std::printf("%s N=%zu min %.3f vs Halton %.3f, mean nearest %.3f vs %.3f\n", layoutName(layout),
-                  n, r.minimum, h.minimum, r.mean, h.mean);
+      std::printf("%s N=%zu min %.3f vs Halton %.3f, mean nearest %.3f vs %.3f\n",
+                  layoutName(layout), n, r.minimum, h.minimum, r.mean, h.mean);
       EXPECT_GT(r.minimum, 1.1 * h.minimum) << layoutName(layout) << " N=" << n;
       EXPECT_GT(r.mean, 1.1 * h.mean) << layoutName(layout) << " N=" << n;
     }

@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "core/color.h"
 #include "core/fir_design.h"
@@ -114,7 +114,8 @@ TEST(TemporalFilter, StepFromSequenceZeroFollowsTheStepResponseAndSettlesAfterKF
     constexpr std::uint64_t kStepSeq = 3;  // early, so the ring's history reaches before seq 0
     for (std::uint64_t seq = 0; seq < kStepSeq + taps.size() + 3; ++seq) {
       const LightSet out = pushOk(filter, seq, makeFrame(4, seq < kStepSeq ? 1.0 : 3.0, seq));
-      const std::size_t j = seq < kStepSeq ? 0 : std::min<std::size_t>(seq - kStepSeq + 1, step.size());
+      const std::size_t j =
+          seq < kStepSeq ? 0 : std::min<std::size_t>(seq - kStepSeq + 1, step.size());
       const double expected = seq < kStepSeq ? 1.0 : 1.0 + 2.0 * step[j - 1];
       EXPECT_NEAR(out.luminanceSr, expected, 1e-12) << presetName(preset) << " seq " << seq;
     }
@@ -126,7 +127,8 @@ TEST(TemporalFilter, OutputDoesNotDependOnTheFirstSequenceNumber) {
   TemporalFilter fromLarge(presetTaps(FilterPreset::Paper9));
   constexpr std::uint64_t kOffset = 1'000'000'007;
   for (std::uint64_t t = 0; t < 20; ++t) {
-    expectSameSet(pushOk(fromLarge, kOffset + t, movingFrame(t)), pushOk(fromZero, t, movingFrame(t)));
+    expectSameSet(pushOk(fromLarge, kOffset + t, movingFrame(t)),
+                  pushOk(fromZero, t, movingFrame(t)));
   }
 }
 
@@ -279,7 +281,8 @@ TEST(TemporalFilter, GrowingTheLightCountDoesNotPop) {
   for (std::uint64_t seq = 0; seq < 12; ++seq) before = pushOk(filter, seq, small);
   LightSet grown = makeFrame(16, 2.0, 0);
   std::copy(small.lights.begin(), small.lights.end(), grown.lights.begin());  // ids 0-7 stay put
-  for (std::size_t i = 0; i < 16; ++i) grown.lights[i].rgb = glm::vec3(2.0 / 16 * chromaOf(std::uint32_t(i)));
+  for (std::size_t i = 0; i < 16; ++i)
+    grown.lights[i].rgb = glm::vec3(2.0 / 16 * chromaOf(std::uint32_t(i)));
   const LightSet after = pushOk(filter, 12, grown);
   EXPECT_EQ(after.luminanceSr, before.luminanceSr);
   EXPECT_NEAR(totalLuminance(after), 2.0, 1e-5);
@@ -294,7 +297,8 @@ TEST(TemporalFilter, LightAbsentForKFramesRestartsAtItsCurrentDirection) {
   for (std::uint64_t absent : {std::uint64_t{taps.size() - 1}, std::uint64_t{taps.size()}}) {
     TemporalFilter filter(taps);
     for (std::uint64_t seq = 0; seq < 10; ++seq) (void)filter.push(seq, makeFrame(4, 1.0, 0));
-    for (std::uint64_t seq = 10; seq < 10 + absent; ++seq) (void)filter.push(seq, makeFrame(2, 1.0, 0));
+    for (std::uint64_t seq = 10; seq < 10 + absent; ++seq)
+      (void)filter.push(seq, makeFrame(2, 1.0, 0));
     LightSet back = makeFrame(4, 1.0, 0);
     back.lights[3].dir = -back.lights[3].dir;  // it returns somewhere else
     const LightSet out = pushOk(filter, 10 + absent, back);

@@ -22,8 +22,8 @@ double angleDeg(glm::vec3 a, glm::vec3 b) {
 }
 
 LightSet lightsOf(const EnvMap& map, std::size_t count, SamplerKind kind) {
-  return generateLights(map, buildSamplingTables(map), defaultSamplingPattern(map.layout).first(count),
-                        kind);
+  return generateLights(map, buildSamplingTables(map),
+                        defaultSamplingPattern(map.layout).first(count), kind);
 }
 
 TEST(TemporalPipeline, StaticMapGivesIdenticalLightsEveryFrame) {
@@ -74,16 +74,17 @@ TEST(TemporalPipeline, MapTurningOneDegreePerFrameMovesLightsBySmallContinuousSt
   // A turning map shifts each row's cumulative table by the mass that crosses the table's origin,
   // so a light in a dim stretch can move several times faster than the map while a bright region
   // crosses the origin (paper 004, 3.3: "the direction of virtually all light sources may change").
-  // What must hold: steps are bounded, typical steps are about the map's own motion, and they shrink
-  // in proportion when the map turns slower (continuity in time: no jumps).
+  // What must hold: steps are bounded, typical steps are about the map's own motion, and they
+  // shrink in proportion when the map turns slower (continuity in time: no jumps).
   const EnvMap oneDegree = testing::proceduralSky(MapLayout::Hemisphere, 360, 90);
   const EnvMap quarterDegree = testing::proceduralSky(MapLayout::Hemisphere, 1440, 90);
   // Both turn by 50 degrees, so the glow crosses the tables' origin (at 323 degrees) in both.
   const StepStatistics fast = stepsUnderRotation(oneDegree, SamplerKind::Havran, 256, 60);
   const StepStatistics slow = stepsUnderRotation(quarterDegree, SamplerKind::Havran, 256, 210);
-  std::printf("filtered steps per frame (deg): 1 deg/frame median %.2f p99 %.2f max %.2f; "
-              "0.25 deg/frame median %.2f p99 %.2f max %.2f\n", fast.medianDeg, fast.p99Deg,
-              fast.maxDeg, slow.medianDeg, slow.p99Deg, slow.maxDeg);
+  std::printf(
+      "filtered steps per frame (deg): 1 deg/frame median %.2f p99 %.2f max %.2f; "
+      "0.25 deg/frame median %.2f p99 %.2f max %.2f\n",
+      fast.medianDeg, fast.p99Deg, fast.maxDeg, slow.medianDeg, slow.p99Deg, slow.maxDeg);
   EXPECT_LT(fast.medianDeg, 1.5);
   EXPECT_LT(fast.maxDeg, 20.0);
   EXPECT_LT(slow.maxDeg, 0.4 * fast.maxDeg);
@@ -98,8 +99,12 @@ TEST(TemporalPipeline, FirstKFilteredLightsAreTheFilteredKSet) {
     const EnvMap frame = testing::rotatedColumns(map, int(3 * seq));
     const SamplingTables tables = buildSamplingTables(frame);
     const auto pattern = defaultSamplingPattern(frame.layout);
-    const LightSet many = *all.push(seq, generateLights(frame, tables, pattern.first(500), SamplerKind::Havran)).lights;
-    const LightSet few = *some.push(seq, generateLights(frame, tables, pattern.first(50), SamplerKind::Havran)).lights;
+    const LightSet many =
+        *all.push(seq, generateLights(frame, tables, pattern.first(500), SamplerKind::Havran))
+             .lights;
+    const LightSet few =
+        *some.push(seq, generateLights(frame, tables, pattern.first(50), SamplerKind::Havran))
+             .lights;
     for (std::size_t i = 0; i < few.lights.size(); ++i) {
       ASSERT_EQ(few.lights[i].dir, many.lights[i].dir) << "frame " << seq << " light " << i;
       // Same colour; the power share scales with 500 / 50.

@@ -86,7 +86,8 @@ ChiSquareResult chiSquareTest(const SamplingTables& t, const DirectionSampler& s
     ++bins;
   }
   result.degreesOfFreedom = std::max(1, bins - 1);
-  result.criticalValue = chiSquareQuantile(result.degreesOfFreedom, normalUpperQuantile(significance));
+  result.criticalValue =
+      chiSquareQuantile(result.degreesOfFreedom, normalUpperQuantile(significance));
   return result;
 }
 

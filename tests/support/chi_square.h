@@ -25,9 +25,11 @@ using DensitySr = std::function<double(glm::dvec3)>;
 
 // Draws `sampleCount` iid uniform square points (fixed seed) through `sampler` and compares their
 // histogram over blocks of `blockRows` x `blockColumns` pixels with `density`.
-[[nodiscard]] ChiSquareResult chiSquareTest(const SamplingTables& tables, const DirectionSampler& sampler,
-                                            const DensitySr& density, int sampleCount, int blockRows,
-                                            int blockColumns, double significance = 1e-4);
+[[nodiscard]] ChiSquareResult chiSquareTest(const SamplingTables& tables,
+                                            const DirectionSampler& sampler,
+                                            const DensitySr& density, int sampleCount,
+                                            int blockRows, int blockColumns,
+                                            double significance = 1e-4);
 
 // Integral of `density` over the map's domain (should be 1).
 [[nodiscard]] double integrateDensity(const SamplingTables& tables, const DensitySr& density);

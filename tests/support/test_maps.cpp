@@ -15,8 +15,9 @@ EnvMap proceduralSky(MapLayout layout, int width, int height) {
       const glm::dvec3 d = pixelCentreDirection(map, x, y);
       const double sky = d.y > 0 ? 0.4 + 0.6 * d.y : 0.15;
       const double glow = 20.0 * std::pow(std::max(0.0, glm::dot(d, sunDir)), 32.0);
-      map.set(x, y, glm::vec3(float(0.6 * sky + glow), float(0.8 * sky + 0.8 * glow),
-                              float(1.0 * sky + 0.5 * glow)));
+      map.set(x, y,
+              glm::vec3(float(0.6 * sky + glow), float(0.8 * sky + 0.8 * glow),
+                        float(1.0 * sky + 0.5 * glow)));
     }
   }
   return map;
@@ -53,8 +54,7 @@ std::vector<std::filesystem::path> sharedHdriPaths() {
 
 EnvMap upperHemisphere(const EnvMap& equirect) {
   EnvMap out{MapLayout::Hemisphere, equirect.width, equirect.height / 2, {}};
-  out.rgb.assign(equirect.rgb.begin(),
-                 equirect.rgb.begin() + std::ptrdiff_t(out.pixelCount() * 3));
+  out.rgb.assign(equirect.rgb.begin(), equirect.rgb.begin() + std::ptrdiff_t(out.pixelCount() * 3));
   return out;
 }
 

@@ -1,15 +1,16 @@
-// vemtool as a user meets it: the JSON it prints, and one clear error line for each kind of bad input.
+// vemtool as a user meets it: the JSON it prints, and one clear error line for each kind of bad
+// input.
+#include <sys/wait.h>
+#include <unistd.h>
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <numbers>
-#include <sys/wait.h>
-#include <unistd.h>
-#include <algorithm>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -42,8 +43,8 @@ class VemtoolCli : public ::testing::Test {
 
   ToolRun run(const std::string& args) const {
     const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string command = std::string(VEMTOOL_PATH) + " " + args + " >" + out.string() + " 2>" +
-                                err.string();
+    const std::string command =
+        std::string(VEMTOOL_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
     const int status = std::system(command.c_str());
     return {WEXITSTATUS(status), readFile(out), readFile(err)};
   }
@@ -100,10 +101,13 @@ TEST_F(VemtoolCli, ZeroAbsurdOrMissingCountAndUnknownOptionsAreRefusedInOneLine)
   vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 8, 4, glm::vec3(1.0F));
   ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "small.pfm"));
   const std::string in = " --in " + (dir_ / "small.pfm").string();
-  const std::vector<std::string> cases{"lights" + in + " --count 0", "lights" + in + " --count 70000",
-                                      "lights" + in + " --count many", "lights" + in + " --bogus",
-                                      "lights" + in + " --sampler fancy", "lights --count 4",
-                                      "frobnicate"};
+  const std::vector<std::string> cases{"lights" + in + " --count 0",
+                                       "lights" + in + " --count 70000",
+                                       "lights" + in + " --count many",
+                                       "lights" + in + " --bogus",
+                                       "lights" + in + " --sampler fancy",
+                                       "lights --count 4",
+                                       "frobnicate"};
   for (const std::string& args : cases) {
     const ToolRun r = run(args);
     EXPECT_NE(r.exitCode, 0) << args;

@@ -1,6 +1,6 @@
 // Build-time generator of the default sampling patterns: writes a C++ source holding
-// relaxedHaltonPattern(kMaxLights) relaxed on the sphere and on the hemisphere, as exact hexadecimal
-// doubles. Run by CMake, never at run time.
+// relaxedHaltonPattern(kMaxLights) relaxed on the sphere and on the hemisphere, as exact
+// hexadecimal doubles. Run by CMake, never at run time.
 #include <cstdio>
 #include <cstdlib>
 

@@ -6,9 +6,9 @@
 #include <memory>
 #include <string>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
 
 #include "commands.h"
 #include "core/fir_design.h"
@@ -61,9 +61,10 @@ int runFilters(const FiltersOptions& o) {
     return EXIT_FAILURE;
   }
   const BandEdgesHz& e = o.spec.edges;
-  const std::string designName = fmt::format("pm{} {:g}/{:g} Hz", o.spec.tapCount, e.passHz, e.stopHz);
-  std::cout << fmt::format("Temporal-filter presets at {:g} Hz capture (normalised taps, sum 1).\n\n",
-                           e.rateHz);
+  const std::string designName =
+      fmt::format("pm{} {:g}/{:g} Hz", o.spec.tapCount, e.passHz, e.stopHz);
+  std::cout << fmt::format(
+      "Temporal-filter presets at {:g} Hz capture (normalised taps, sum 1).\n\n", e.rateHz);
   printHeader(e);
   for (FilterPreset preset : kAllPresets) printRow(presetName(preset), presetTaps(preset), e);
   printRow(designName, *designed, e);
@@ -78,7 +79,8 @@ int runFilters(const FiltersOptions& o) {
 void addFiltersCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<FiltersOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "filters", "Compare the temporal filter presets (delay, attenuation, jitter) at a capture rate");
+      "filters",
+      "Compare the temporal filter presets (delay, attenuation, jitter) at a capture rate");
   cmd->footer(
       "Example:\n  vemtool filters --rate 21\n"
       "Prints a markdown table: one row per preset (none, paper9, equiripple5, minphase9) and one\n"
@@ -87,7 +89,8 @@ void addFiltersCommand(CLI::App& app, int& exitCode) {
   LowPassSpec& spec = options->spec;
   cmd->add_option("--rate", spec.edges.rateHz, "Capture rate in Hz (default 21, the paper's)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--pass", spec.edges.passHz, "Pass-band edge in Hz for the design and the gains (7)");
+  cmd->add_option("--pass", spec.edges.passHz,
+                  "Pass-band edge in Hz for the design and the gains (7)");
   cmd->add_option("--stop", spec.edges.stopHz, "Stop-band edge in Hz, below rate / 2 (9)");
   cmd->add_option("--taps", spec.tapCount, "Odd tap count of the design (9)");
   cmd->callback([options, &exitCode] { exitCode = runFilters(*options); });

@@ -28,13 +28,14 @@ nlohmann::ordered_json frameJson(const LightSet& lights, std::uint64_t frame) {
 }
 
 nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ, MapLayout layout,
-                                  std::uint64_t frame) {
+                                          std::uint64_t frame) {
   ClusteringParams params;
   params.clusterBudget = clusterQ;
   params.layout = layout;
   const Clustering clustering = clusterLights(lights, params);
   nlohmann::ordered_json out = frameJson(clustering.clusters, frame);
-  std::vector<nlohmann::ordered_json> members(clustering.clusters.lights.size(), nlohmann::ordered_json::array());
+  std::vector<nlohmann::ordered_json> members(clustering.clusters.lights.size(),
+                                              nlohmann::ordered_json::array());
   for (std::size_t i = 0; i < lights.lights.size(); ++i) {
     members[clustering.clusterOfLight[i]].push_back(lights.lights[i].id);
   }

@@ -16,6 +16,6 @@ namespace vem::tool {
 
 [[nodiscard]] nlohmann::ordered_json frameJson(const LightSet& lights, std::uint64_t frame);
 [[nodiscard]] nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ,
-                                                MapLayout layout, std::uint64_t frame);
+                                                        MapLayout layout, std::uint64_t frame);
 
 }  // namespace vem::tool

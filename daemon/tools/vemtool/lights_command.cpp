@@ -4,10 +4,10 @@
 #include <map>
 #include <string>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "core/default_pattern.h"
@@ -40,10 +40,10 @@ int runLights(const LightsOptions& o) {
                  tables.badPixels);
   }
   if (tables.black) spdlog::warn("{}: the map is black; every light has rgb 0", o.input);
-  const LightSet lights = generateLights(
-      *map, tables, defaultSamplingPattern(map->layout).first(o.count), o.sampler);
-  const nlohmann::ordered_json frame = o.clusterQ ? clusteredFrameJson(lights, *o.clusterQ, map->layout, 0)
-                                          : frameJson(lights, 0);
+  const LightSet lights =
+      generateLights(*map, tables, defaultSamplingPattern(map->layout).first(o.count), o.sampler);
+  const nlohmann::ordered_json frame =
+      o.clusterQ ? clusteredFrameJson(lights, *o.clusterQ, map->layout, 0) : frameJson(lights, 0);
   std::cout << (o.prettyJson ? frame.dump(2) : frame.dump()) << '\n';
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
 }
@@ -56,7 +56,8 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
       "lights", "Compute N directional lights from an environment map file (.exr, .hdr, .pfm)");
   cmd->footer(
       "Example:\n  vemtool lights --in ../shared/data/hdri/park.exr --count 16\n"
-      "Prints {\"frame\":0,\"count\":N,\"lights\":[{\"id\":K,\"dir\":[x,y,z],\"rgb\":[r,g,b]},...]}:\n"
+      "Prints "
+      "{\"frame\":0,\"count\":N,\"lights\":[{\"id\":K,\"dir\":[x,y,z],\"rgb\":[r,g,b]},...]}:\n"
       "dir points from the scene toward the light (+Y up), rgb is its irradiance contribution\n"
       "(radiance x sr); the first k lights of an N-light set are the k-light set.");
   cmd->add_option("--in", options->input, "Map file: equirectangular (W = 2H) or polar (W = 4H)")
@@ -66,7 +67,8 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(std::size_t(1), kMaxLights));
   const std::map<std::string, MapLayout> layouts{{"sphere", MapLayout::Sphere},
                                                  {"hemisphere", MapLayout::Hemisphere}};
-  cmd->add_option("--layout", options->layout, "sphere | hemisphere (default: from the map's shape)")
+  cmd->add_option("--layout", options->layout,
+                  "sphere | hemisphere (default: from the map's shape)")
       ->transform(CLI::CheckedTransformer(layouts, CLI::ignore_case));
   const std::map<std::string, SamplerKind> samplers{{"havran", SamplerKind::Havran},
                                                     {"standard", SamplerKind::Standard}};

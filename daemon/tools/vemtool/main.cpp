@@ -2,9 +2,9 @@
 // each subcommand (see commands.h) reads its input, calls the core, prints the result.
 #include <cstdlib>
 
-#include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
 
 #include "commands.h"
 
@@ -17,7 +17,8 @@ int main(int argc, char** argv) {
   CLI::App app{"vemtool: directional lights from HDR environment maps, and tools (vemcast)"};
   app.require_subcommand(1);
   app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
-    const std::string help = failed->get_parent() != nullptr ? "vemtool " + failed->get_name() : "vemtool";
+    const std::string help =
+        failed->get_parent() != nullptr ? "vemtool " + failed->get_name() : "vemtool";
     return "vemtool: error: " + std::string(e.what()) + " (see '" + help + " --help')\n";
   });
   int exitCode = EXIT_SUCCESS;
