@@ -50,12 +50,19 @@ GlossyLightSets makeGlossyLightSets(const LightSet& low, std::size_t highCount,
 
 std::vector<GlossyShadingLight> glossyLightsFor(glm::dvec3 reflectedDir,
                                                 const GlossyLightSets& sets,
-                                                const GlossyRegions& regions) {
+                                                const GlossyRegions& regions,
+                                                std::size_t maxConeLights) {
+  assert(maxConeLights >= 1);
   const glm::dvec3 r = glm::normalize(reflectedDir);
   const double cosHalfAngle = std::cos(regions.coneHalfAngleRad);
   std::vector<GlossyShadingLight> out;
   for (const std::uint32_t index : sets.lowLists.lightsOf(regions.low.regionOf(r))) {
     if (cosineTo(r, sets.low.lights[index]) > cosHalfAngle) out.push_back({index, 1.0, true});
+  }
+  if (out.size() > maxConeLights) {  // keep the progressive prefix, scaled up to the whole cone
+    const double scale = double(out.size()) / double(maxConeLights);
+    out.resize(maxConeLights);
+    for (GlossyShadingLight& light : out) light.weight = scale;
   }
   const double weight = highWeight(sets);
   for (const std::uint32_t index : sets.highLists.lightsOf(regions.high.regionOf(r))) {

@@ -17,12 +17,16 @@
 //   with weight |L| / |H|: two strata, each light counted at most once. Lights with R . dir <= 0
 //   are left out, so the reference assumes a lobe that vanishes on R's lower hemisphere.
 // - Directions in the world frame of env_map.h (right-handed, +Y up); angles in radians; rgb in the
-//   irradiance units of light.h. Not implemented: the paper's cap of the first k cone lights.
+//   irradiance units of light.h.
+// - The cone's cost can be capped (the paper's "we pick up only the first k light sources belonging
+//   to C and scale up their power appropriately"): with maxConeLights = k and m > k lights inside
+//   C, the first k (in light order, a progressive prefix) shade with weight m / k.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <vector>
 
 #include "core/angular_regions.h"
@@ -67,9 +71,10 @@ struct GlossyShadingLight {
 [[nodiscard]] GlossyLightSets makeGlossyLightSets(const LightSet& low, std::size_t highCount,
                                                   const GlossyRegions& regions);
 // The lights that shade a point whose ideal reflected direction is reflectedDir (non-zero): the L
-// lights inside the cone in light order, then the H lights outside it in light order.
-[[nodiscard]] std::vector<GlossyShadingLight> glossyLightsFor(glm::dvec3 reflectedDir,
-                                                              const GlossyLightSets& sets,
-                                                              const GlossyRegions& regions);
+// lights inside the cone in light order (at most maxConeLights of them, rescaled), then the H
+// lights outside it in light order. maxConeLights >= 1.
+[[nodiscard]] std::vector<GlossyShadingLight> glossyLightsFor(
+    glm::dvec3 reflectedDir, const GlossyLightSets& sets, const GlossyRegions& regions,
+    std::size_t maxConeLights = std::numeric_limits<std::size_t>::max());
 
 }  // namespace vem

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <set>
@@ -49,9 +50,10 @@ double cosineTo(glm::dvec3 r, const Light& light) {
 // Sum over the shading lights of weight x red x lobe(R . dir).
 template <class Lobe>
 double glossyEstimate(glm::dvec3 r, const GlossyLightSets& sets, const GlossyRegions& regions,
-                      Lobe lobe) {
+                      Lobe lobe,
+                      std::size_t maxConeLights = std::numeric_limits<std::size_t>::max()) {
   double sum = 0.0;
-  for (const GlossyShadingLight& s : glossyLightsFor(r, sets, regions)) {
+  for (const GlossyShadingLight& s : glossyLightsFor(r, sets, regions, maxConeLights)) {
     sum += s.weight * double(sets.low.lights[s.index].rgb.x) *
            lobe(cosineTo(r, sets.low.lights[s.index]));
   }
@@ -145,6 +147,43 @@ TEST(GlossyLightSets, PhongLobeEstimateMatchesTheOneOfAllLights) {
             << meanAbs << "\n";
   EXPECT_LT(std::abs(bias), 0.01);
   EXPECT_LT(meanAbs, 0.1);
+}
+
+TEST(GlossyLightSets, ConeCapKeepsTheFirstKConeLightsScaledToTheWholeCone) {
+  const Fixture& f = fixture();
+  const double cosHalf = std::cos(f.regions.coneHalfAngleRad);
+  const auto indicator = [cosHalf](double c) { return c > cosHalf ? 1.0 : 0.0; };
+  const auto phong = [](double c) { return c > 0.0 ? std::pow(c, 8.0) : 0.0; };
+  std::mt19937 rng(27);
+  double meanAbs = 0.0;
+  const int count = 500;
+  for (int i = 0; i < count; ++i) {
+    const glm::dvec3 r = randomUnit(rng);
+    const auto all = glossyLightsFor(r, f.sets, f.regions);
+    const auto capped = glossyLightsFor(r, f.sets, f.regions, 8);
+    std::vector<std::uint32_t> inCone, cappedInCone;
+    for (const auto& s : all)
+      if (s.inCone) inCone.push_back(s.index);
+    double weightSum = 0.0;
+    for (const auto& s : capped) {
+      if (!s.inCone) continue;
+      cappedInCone.push_back(s.index);
+      weightSum += s.weight;
+    }
+    // The first 8 cone lights in light order (a progressive prefix), weights summing to the count.
+    const std::size_t kept = std::min<std::size_t>(8, inCone.size());
+    ASSERT_EQ(cappedInCone,
+              std::vector<std::uint32_t>(inCone.begin(), inCone.begin() + std::ptrdiff_t(kept)));
+    EXPECT_NEAR(weightSum, double(inCone.size()), 1e-9);
+    EXPECT_NEAR(glossyEstimate(r, f.sets, f.regions, indicator, 8),
+                allOfL(r, f.sets.low, indicator), 1e-3 * allOfL(r, f.sets.low, indicator) + 1e-9);
+    meanAbs +=
+        std::abs(glossyEstimate(r, f.sets, f.regions, phong, 8) / allOfL(r, f.sets.low, phong) -
+                 1.0) /
+        count;
+  }
+  std::cout << "Phong n = 8 with at most 8 cone lights: mean |error| " << meanAbs << "\n";
+  EXPECT_LT(meanAbs, 0.15);
 }
 
 }  // namespace
