@@ -1,18 +1,20 @@
 // Havran's inverse transform (paper 004 section 3.1, after Havran, Dmitriev and Seidel 2003):
-// unit square -> unit disk by the concentric map, a warp of the disk by 1D cumulative tables over
-// its radius and its angle, and the equal-area map from the disk to the hemisphere (or sphere).
+// unit square -> cylinder coordinates (s, w) by an equal-area map (the concentric map to the disk for
+// the hemisphere, as in the paper: s = rho^2, w = psi_d / 2 pi; Clarberg's equal-area octahedral map
+// for the full sphere; surface_parameterization.h), a warp of s and w by 1D cumulative tables, and
+// the equal-area map back to the surface.
 //
-// The warp: the disk radius rho gives u = rho^2 (uniform in area); u is inverted through the tent
-// marginal over the row coordinate r (SamplingTables::tentCdf, the row masses interpolated linearly
-// between row centres); the disk angle psi_d / 2 pi is inverted through the conditional over
-// columns at r, which is the linear interpolation of the two neighbouring rows' cumulative masses
-// (weights (1 - t) and t, each row weighted by its pixel solid angle). So the density sampled is
-// the map's importance interpolated linearly in r between row centres and constant within a column:
-// a continuous density, strictly positive thanks to the floor (sampling_tables.h), which makes the
-// mapping continuous and bijective for any non-negative map, across the concentric map's diagonals,
-// at the pole and across the psi = 0 seam (the conditional tables wrap).
-// Equal-area disk to surface: s = u-shaped area coordinate; cos theta = 1 - s (hemisphere) or
-// 1 - 2 s (sphere), so the disk's rim is the horizon (hemisphere) or the nadir (sphere).
+// The warp: s is inverted through the tent marginal over the row coordinate r
+// (SamplingTables::tentCdf, the row masses interpolated linearly between row centres); w is
+// inverted through the conditional over columns at r, which is the linear interpolation of the two
+// neighbouring rows' cumulative masses (weights (1 - t) and t, each row weighted by its pixel solid
+// angle). So the density sampled is the map's importance interpolated linearly in r between row
+// centres and constant within a column: a continuous density, strictly positive thanks to the floor
+// (sampling_tables.h), which makes the mapping continuous and bijective for any non-negative map,
+// across the concentric map's diagonals, at the pole, across the psi = 0 seam (the conditional
+// tables wrap) and across the octahedral map's equator.
+// Surface from (r, xc): s is linear in r within a row; cos theta = 1 - s (hemisphere) or 1 - 2 s
+// (sphere); the map's azimuth follows xc (env_map.h).
 #pragma once
 
 #include <glm/vec2.hpp>
