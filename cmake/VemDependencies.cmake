@@ -3,8 +3,10 @@ find_package(PkgConfig REQUIRED)
 find_package(glm REQUIRED)                       # libglm-dev: vector maths
 pkg_check_modules(NANOFLANN REQUIRED IMPORTED_TARGET nanoflann)   # libnanoflann-dev: kd-tree
 find_package(OpenEXR REQUIRED)                   # libopenexr-dev: .exr maps
-find_package(OpenCV REQUIRED COMPONENTS core imgcodecs)  # libopencv-dev: .hdr and .pfm maps
+find_package(OpenCV REQUIRED COMPONENTS core imgcodecs imgproc calib3d photo)  # libopencv-dev:
+                                                 # map and frame files, calibration maths
 find_package(CLI11 REQUIRED)                     # libcli11-dev: argument parsing
+find_package(tomlplusplus REQUIRED)              # libtomlplusplus-dev: calibration and config files
 find_package(nlohmann_json REQUIRED)             # nlohmann-json3-dev: JSON output
 find_package(spdlog REQUIRED)                    # libspdlog-dev: logging in the shells
 

@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev libnanoflann-dev libopenexr-dev libopencv-dev libcli11-dev nlohmann-json3-dev
-  libspdlog-dev libliquid-dev
+  libspdlog-dev libliquid-dev libtomlplusplus-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 missing=()

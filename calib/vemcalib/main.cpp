@@ -1,0 +1,38 @@
+// vemcalib: calibrates a camera for vemcast (docs/calibration.md). A thin shell over vem_calib:
+// each subcommand (commands.h) reads its inputs, calls the library and writes a camera file.
+#include <cstdlib>
+
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  // Diagnostics go to stderr, one line each; stdout carries the results (residual tables).
+  auto logger = spdlog::stderr_color_st("vemcalib");
+  logger->set_pattern("vemcalib: %^%l%$: %v");
+  spdlog::set_default_logger(logger);
+
+  CLI::App app{"vemcalib: calibrates an HDR fisheye camera for vemcast: photometric response from grey "
+               "patches, fisheye lens from checkerboards, LDR response from exposure brackets"};
+  app.require_subcommand(1);
+  app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
+    const std::string help =
+        failed->get_parent() != nullptr ? "vemcalib " + failed->get_name() : "vemcalib";
+    return "vemcalib: error: " + std::string(e.what()) + " (see '" + help + " --help')\n";
+  });
+  int exitCode = EXIT_SUCCESS;
+  vem::calibtool::addPhotometricCommand(app, exitCode);
+  vem::calibtool::addFisheyeCommand(app, exitCode);
+  vem::calibtool::addResponseCommand(app, exitCode);
+  vem::calibtool::addSimulateCommand(app, exitCode);
+  vem::calibtool::addApplyCommand(app, exitCode);
+  vem::calibtool::addShowCommand(app, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return exitCode;
+}
