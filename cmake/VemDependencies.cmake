@@ -9,6 +9,10 @@ find_package(CLI11 REQUIRED)                     # libcli11-dev: argument parsin
 find_package(tomlplusplus REQUIRED)              # libtomlplusplus-dev: calibration and config files
 find_package(nlohmann_json REQUIRED)             # nlohmann-json3-dev: JSON output
 find_package(spdlog REQUIRED)                    # libspdlog-dev: logging in the shells
+find_package(Protobuf REQUIRED)                  # libprotobuf-dev, protobuf-compiler: record metadata
+find_package(Boost REQUIRED)                     # libboost-dev (headers): Boost.CRC, the CRC32C oracle
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)   # libzstd-dev: recorded pixels
+pkg_check_modules(ISAL REQUIRED IMPORTED_TARGET libisal)   # libisal-dev: fast CRC32C of records
 
 # liquid-dsp (libliquid-dev) ships a static library and a header, without CMake or pkg-config files.
 find_path(LIQUID_INCLUDE_DIR liquid/liquid.h REQUIRED)

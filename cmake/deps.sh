@@ -6,7 +6,9 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev libnanoflann-dev libopenexr-dev libopencv-dev libcli11-dev nlohmann-json3-dev
   libspdlog-dev libliquid-dev libtomlplusplus-dev
+  libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang-14 libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

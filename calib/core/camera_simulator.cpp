@@ -83,12 +83,14 @@ double SensorResponseSimulator::gaussian() {
 std::uint16_t SensorResponseSimulator::code(int channel, double luminanceCdM2) {
   const double ideal =
       codeFromLuminance(photometric_, channel, luminanceCdM2, options_.exposureUs, options_.gain);
+  const double top = std::min(double(format_.maxCode()), photometric_.saturationCode);
+  // A saturated pixel is at its full well: it reads the saturation code, without noise.
+  if (ideal >= photometric_.saturationCode) return std::uint16_t(top);
   double variance = options_.noise.readNoiseCode * options_.noise.readNoiseCode;
   if (!std::holds_alternative<LogResponse>(photometric_.response)) {
     variance += options_.noise.shotNoiseGain * std::max(0.0, ideal - photometric_.blackLevelCode);
   }
   const double noisy = variance > 0.0 ? ideal + std::sqrt(variance) * gaussian() : ideal;
-  const double top = std::min(double(format_.maxCode()), photometric_.saturationCode);
   return std::uint16_t(std::clamp(std::round(noisy), 0.0, top));
 }
 

@@ -8,7 +8,8 @@
 // outside it read 0) whose values are luminance in cd/m^2 per channel, times radianceScale.
 // Pixels outside the lens circle read the black level plus noise. Noise: Gaussian read noise of
 // readNoiseCode codes, plus photon shot noise for linear and tabulated responses (variance
-// shotNoiseGain * (code - black)); a log sensor gets read noise only. All randomness comes from
+// shotNoiseGain * (code - black)); a log sensor gets read noise only. A pixel at or beyond saturation
+// reads the saturation code exactly (a full well has no noise left). All randomness comes from
 // `seed`: the same inputs give the same frame.
 #pragma once
 

@@ -20,7 +20,9 @@ double KannalaBrandtLens::radiusDerivativePx(double thetaRad) const {
 std::optional<double> KannalaBrandtLens::thetaFromRadius(double radius) const {
   if (!(radius >= 0.0)) return std::nullopt;
   const double rMax = radiusPx(maxThetaRad);
-  if (radius > rMax) return std::nullopt;
+  // A direction at exactly maxThetaRad projects to rMax up to rounding: accept that much slack.
+  if (radius > rMax * (1.0 + 1e-12)) return std::nullopt;
+  if (radius >= rMax) return maxThetaRad;
   // r is increasing on [0, maxTheta] (lensDefect): Newton from the linear guess, kept inside a
   // bracket that shrinks with every step, so it cannot leave the monotone range.
   double lo = 0.0;
@@ -35,8 +37,8 @@ std::optional<double> KannalaBrandtLens::thetaFromRadius(double radius) const {
     }
     const double d = radiusDerivativePx(theta);
     double next = theta - f / d;
+    if (std::abs(next - theta) < 1e-14) return next;  // converged (before any bisection step)
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - theta) < 1e-14) return next;
     theta = next;
   }
   return theta;

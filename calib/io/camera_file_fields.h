@@ -10,10 +10,10 @@ inline constexpr std::string_view kCameraFormatName = "vemcast-camera";
 
 inline constexpr std::string_view kUnitPx = "px";
 inline constexpr std::string_view kUnitCode = "code";
-inline constexpr std::string_view kUnitLogSlope = "code/ln(cd/m2)";      // log model: b
-inline constexpr std::string_view kUnitLinearGain = "code/(cd/m2*us)";   // linear model: gain
-inline constexpr std::string_view kUnitTableScale = "cd/m2*us";          // table model: scale
-inline constexpr std::string_view kUnitRelative = "relative";            // table model: exposure
+inline constexpr std::string_view kUnitLogSlope = "code/ln(cd/m2)";     // log model: b
+inline constexpr std::string_view kUnitLinearGain = "code/(cd/m2*us)";  // linear model: gain
+inline constexpr std::string_view kUnitTableScale = "cd/m2*us";         // table model: scale
+inline constexpr std::string_view kUnitRelative = "relative";           // table model: exposure
 inline constexpr std::string_view kUnitDeg = "deg";
 inline constexpr std::string_view kUnitPercent = "%";
 

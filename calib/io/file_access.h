@@ -24,4 +24,9 @@ namespace vem::calib::io::detail {
 [[nodiscard]] std::expected<void, CalibFileFailure> writeWholeFile(
     const std::filesystem::path& path, std::span<const unsigned char> bytes, std::string_view kind);
 
+// writeWholeFile for text.
+[[nodiscard]] std::expected<void, CalibFileFailure> writeTextFile(const std::filesystem::path& path,
+                                                                  std::string_view text,
+                                                                  std::string_view kind);
+
 }  // namespace vem::calib::io::detail

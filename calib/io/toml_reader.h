@@ -1,10 +1,10 @@
-// Reading the calibration TOML files (internal to vem_calibio): typed fields, quantities with units,
-// and one sentence naming the file and the field for the first thing that is wrong.
+// Reading the calibration TOML files (internal to vem_calibio): typed fields, quantities with
+// units, and one sentence naming the file and the field for the first thing that is wrong.
 //
 // Conventions: a quantity is an inline table { value = ..., unit = "..." } whose unit must be the
 // one the field names ("deg" fields also take "rad", converted). Numbers may be written as integers
-// or floats and must be finite. Every table is read with onlyKeys(), so a misspelt key or section is
-// refused instead of being ignored.
+// or floats and must be finite. Every table is read with onlyKeys(), so a misspelt key or section
+// is refused instead of being ignored.
 //
 // All FieldReaders of one file share one ReadStatus and stop at its first failure: later reads
 // return a default and record nothing, so a parser reads straight through and checks once.
@@ -35,7 +35,8 @@ struct ReadStatus {
 [[nodiscard]] std::expected<toml::table, CalibFileFailure> parseToml(const std::string& text,
                                                                      const std::string& source);
 
-// How many values a per-channel or fixed-size array must hold, and why ("one per channel of RGB12").
+// How many values a per-channel or fixed-size array must hold, and why ("one per channel of
+// RGB12").
 struct ArrayShape {
   std::size_t count = 1;
   std::string_view reason;
@@ -80,7 +81,8 @@ class FieldReader {
   // A required sub-table (after a failure: a reader of an empty table), or an optional one.
   [[nodiscard]] FieldReader section(std::string_view key);
   [[nodiscard]] std::optional<FieldReader> optionalSection(std::string_view key);
-  // The tables of an array of tables ([[key]]), each read with `prefixOf(index)`.
+  // The array of tables [[key]] (required); the caller reads each table with its own FieldReader
+  // on the same ReadStatus.
   [[nodiscard]] const toml::array* tableArray(std::string_view key);
 
   // Records `what` about `key` as the failure (unless there is one already).

@@ -18,9 +18,9 @@ namespace vem::calib::io::detail {
 
 class TomlWriter {
  public:
-  void comment(std::string_view text);             // "# text"
-  void table(std::string_view name);               // a blank line, then "[name]"
-  void arrayTable(std::string_view name);          // a blank line, then "[[name]]"
+  void comment(std::string_view text);     // "# text"
+  void table(std::string_view name);       // a blank line, then "[name]"
+  void arrayTable(std::string_view name);  // a blank line, then "[[name]]"
 
   void string(std::string_view key, std::string_view value, std::string_view note = {});
   void integer(std::string_view key, std::int64_t value, std::string_view note = {});

@@ -17,6 +17,17 @@ int main(int argc, char** argv) {
   CLI::App app{"vemcalib: calibrates an HDR fisheye camera for vemcast: photometric response from grey "
                "patches, fisheye lens from checkerboards, LDR response from exposure brackets"};
   app.require_subcommand(1);
+  app.footer(
+      "Example, a whole calibration on simulated frames (no camera needed):\n"
+      "  vemcalib simulate patches --camera config/camera-example.toml --out sim\n"
+      "  vemcalib photometric --frame sim/patches-1.png sim/patches-2.png --patches sim/patches.toml \\\n"
+      "      --bits 12 --black-level 64 --saturation 4095 --out sim/camera.toml\n"
+      "  vemcalib simulate boards --camera config/camera-example.toml --board 9x6 --square 60 --out sim\n"
+      "  vemcalib fisheye --image sim/board-*.png --board 9x6 --square 60 --fov 190 --out sim/camera.toml\n"
+      "  vemcalib simulate frame --camera config/camera-example.toml --map sky.exr --out raw.png\n"
+      "  vemcalib apply --camera sim/camera.toml --frame raw.png --out polar.exr\n"
+      "  vemtool lights --in polar.exr --count 64\n"
+      "docs/calibration.md explains each step and the camera file.");
   app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
     const std::string help =
         failed->get_parent() != nullptr ? "vemcalib " + failed->get_name() : "vemcalib";

@@ -17,6 +17,7 @@
 #include "accuracy_study.h"
 #include "bench_fixtures.h"
 #include "calib_benchmarks.h"
+#include "recording_benchmarks.h"
 #include "report_writer.h"
 #include "stage_benchmarks.h"
 
@@ -72,6 +73,7 @@ int main(int argc, char** argv) {
   const std::vector<std::size_t> counts{16, 64, 256, 1024, 4096};
   vem::bench::registerStageBenchmarks();
   vem::bench::registerCalibrationBenchmarks();
+  vem::bench::registerRecordingBenchmarks();
   vem::bench::registerAccuracyTimingBenchmarks(counts);
   CapturingReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

@@ -9,5 +9,7 @@ namespace vem::tool {
 
 void addLightsCommand(CLI::App& app, int& exitCode);   // lights_command.cpp
 void addFiltersCommand(CLI::App& app, int& exitCode);  // filters_command.cpp
+void addInfoCommand(CLI::App& app, int& exitCode);     // info_command.cpp
+void addRecoverCommand(CLI::App& app, int& exitCode);  // recover_command.cpp
 
 }  // namespace vem::tool

@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   int exitCode = EXIT_SUCCESS;
   vem::tool::addLightsCommand(app, exitCode);
   vem::tool::addFiltersCommand(app, exitCode);
+  vem::tool::addInfoCommand(app, exitCode);
+  vem::tool::addRecoverCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

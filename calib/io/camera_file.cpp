@@ -1,0 +1,265 @@
+// Reading (and saving) camera files: the fields of camera_file.h, each checked as it is read.
+#include "calib/io/camera_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+#include "calib/io/camera_file_fields.h"
+#include "calib/io/file_access.h"
+#include "calib/io/toml_reader.h"
+
+namespace vem::calib::io {
+namespace {
+
+using detail::ArrayShape;
+using detail::FieldReader;
+using detail::shortestText;
+
+std::array<double, 3> channelArray(const std::vector<double>& values) {
+  std::array<double, 3> out{};
+  for (std::size_t c = 0; c < values.size() && c < out.size(); ++c) out[c] = values[c];
+  return out;
+}
+
+void readHeader(FieldReader& root) {
+  const std::string format = root.string("format");
+  root.require(format == detail::kCameraFormatName, "format",
+               "expected \"vemcast-camera\", found \"" + format + "\" (not a vemcast camera file)");
+  const std::int64_t version = root.integer("version", std::numeric_limits<std::int64_t>::min(),
+                                            std::numeric_limits<std::int64_t>::max());
+  if (root.ok() && version != kCameraFileVersion)
+    root.fail("version", CalibFileError::UnknownVersion,
+              "unknown version " + std::to_string(version) +
+                  " (this build of vemcast reads version " + std::to_string(kCameraFileVersion) +
+                  ")");
+}
+
+PixelFormat readPixelFormat(FieldReader& r) {
+  const std::string name = r.string("pixel_format");
+  const std::optional<PixelFormat> format = parsePixelFormat(name);
+  r.require(!r.ok() || format.has_value(), "pixel_format",
+            "expected Mono8, Mono10, Mono12, Mono16, RGB8, RGB10, RGB12 or RGB16, found \"" + name +
+                "\"");
+  return format.value_or(PixelFormat{});
+}
+
+CameraIdentity readCamera(FieldReader r) {
+  r.onlyKeys({"model", "serial", "sensor_width", "sensor_height", "pixel_format"});
+  CameraIdentity camera;
+  camera.model = r.string("model");
+  camera.serial = r.string("serial");
+  camera.sensorWidthPx =
+      int(r.integerQuantity("sensor_width", detail::kUnitPx, 1, detail::kMaxSensorSidePx));
+  camera.sensorHeightPx =
+      int(r.integerQuantity("sensor_height", detail::kUnitPx, 1, detail::kMaxSensorSidePx));
+  camera.pixelFormat = readPixelFormat(r);
+  return camera;
+}
+
+PhotometricQuality readPhotometricFit(FieldReader r) {
+  r.onlyKeys(
+      {"rms_residual", "max_residual", "max_check_error", "fit_patches", "check_patches", "date"});
+  PhotometricQuality quality;
+  quality.rmsResidualPercent = r.quantity("rms_residual", detail::kUnitPercent);
+  quality.maxResidualPercent = r.quantity("max_residual", detail::kUnitPercent);
+  quality.maxCheckErrorPercent = r.quantity("max_check_error", detail::kUnitPercent);
+  for (const auto& [key, value] : {std::pair{"rms_residual", quality.rmsResidualPercent},
+                                   std::pair{"max_residual", quality.maxResidualPercent},
+                                   std::pair{"max_check_error", quality.maxCheckErrorPercent}})
+    r.require(value >= 0.0, key,
+              "expected a percentage of 0 or more, found " + shortestText(value));
+  quality.fitPatches = int(r.integer("fit_patches", 0, 1'000'000));
+  quality.checkPatches = int(r.integer("check_patches", 0, 1'000'000));
+  quality.date = r.dateText("date");
+  return quality;
+}
+
+void readLevels(FieldReader& r, PixelFormat format, PhotometricCalibration& photometric) {
+  const double maxCode = format.maxCode();
+  photometric.blackLevelCode = r.quantity("black_level", detail::kUnitCode);
+  r.require(photometric.blackLevelCode >= 0.0, "black_level",
+            "expected a code of 0 or more, found " + shortestText(photometric.blackLevelCode));
+  photometric.saturationCode = r.quantity("saturation", detail::kUnitCode);
+  r.require(photometric.saturationCode <= maxCode, "saturation",
+            "expected at most " + shortestText(maxCode) + ", the largest " +
+                pixelFormatName(format) + " code, found " +
+                shortestText(photometric.saturationCode));
+  r.require(photometric.saturationCode > photometric.blackLevelCode, "saturation",
+            "expected a code above the black level " + shortestText(photometric.blackLevelCode) +
+                ", found " + shortestText(photometric.saturationCode));
+}
+
+LogResponse readLogResponse(FieldReader& r, ArrayShape perChannel) {
+  LogResponse response;
+  response.aCode = channelArray(r.quantityArray("a", detail::kUnitCode, perChannel));
+  const std::vector<double> b = r.quantityArray("b", detail::kUnitLogSlope, perChannel);
+  for (const double slope : b)
+    r.require(slope > 0.0, "b", "expected slopes above 0, found " + shortestText(slope));
+  response.bCodePerLn = channelArray(b);
+  return response;
+}
+
+LinearResponse readLinearResponse(FieldReader& r, ArrayShape perChannel) {
+  const std::vector<double> gain = r.quantityArray("gain", detail::kUnitLinearGain, perChannel);
+  for (const double g : gain)
+    r.require(g > 0.0, "gain", "expected gains above 0, found " + shortestText(g));
+  return LinearResponse{channelArray(gain)};
+}
+
+// The first code at which a tabulated curve goes wrong (negative, or lower than the code before).
+std::optional<std::size_t> badTableCode(const std::vector<double>& curve) {
+  for (std::size_t code = 0; code < curve.size(); ++code)
+    if (curve[code] < 0.0 || (code > 0 && curve[code] < curve[code - 1])) return code;
+  return std::nullopt;
+}
+
+TabulatedResponse readTableResponse(FieldReader& r, PixelFormat format, ArrayShape perChannel) {
+  TabulatedResponse response;
+  const std::string perCode = "one per code of " + pixelFormatName(format);
+  const auto curves = r.quantityRows("exposure", detail::kUnitRelative, perChannel,
+                                     ArrayShape{std::size_t(format.maxCode()) + 1, perCode});
+  for (std::size_t c = 0; c < curves.size() && r.ok(); ++c) {
+    if (const std::optional<std::size_t> code = badTableCode(curves[c]))
+      r.fail("exposure", CalibFileError::BadValue,
+             "channel " + std::to_string(c) + " is negative or decreases at code " +
+                 std::to_string(*code) + " (expected a non-decreasing curve of values >= 0)");
+    response.exposureByCode[c] = curves[c];
+  }
+  response.scaleCdM2 = r.quantity("scale", detail::kUnitTableScale);
+  r.require(response.scaleCdM2 > 0.0, "scale",
+            "expected a scale above 0, found " + shortestText(response.scaleCdM2));
+  return response;
+}
+
+PhotometricCalibration readPhotometric(FieldReader r, PixelFormat format,
+                                       PhotometricQuality& quality) {
+  PhotometricCalibration photometric;
+  const std::string model = r.string("model");
+  const std::string reason = "one per channel of " + pixelFormatName(format);
+  const ArrayShape perChannel{std::size_t(format.channels), reason};
+  if (model == "log") {
+    r.onlyKeys({"model", "black_level", "saturation", "a", "b", "fit"});
+    photometric.response = readLogResponse(r, perChannel);
+  } else if (model == "linear") {
+    r.onlyKeys({"model", "black_level", "saturation", "gain", "fit"});
+    photometric.response = readLinearResponse(r, perChannel);
+  } else if (model == "table") {
+    r.onlyKeys({"model", "black_level", "saturation", "exposure", "scale", "fit"});
+    photometric.response = readTableResponse(r, format, perChannel);
+  } else {
+    r.fail("model", CalibFileError::BadValue,
+           "expected \"log\", \"linear\" or \"table\", found \"" + model + "\"");
+  }
+  readLevels(r, format, photometric);
+  quality = readPhotometricFit(r.section("fit"));
+  return photometric;
+}
+
+GeometricQuality readGeometricFit(FieldReader r) {
+  r.onlyKeys({"rms_reprojection", "views", "corners", "date"});
+  GeometricQuality quality;
+  quality.rmsReprojectionPx = r.quantity("rms_reprojection", detail::kUnitPx);
+  r.require(quality.rmsReprojectionPx >= 0.0, "rms_reprojection",
+            "expected 0 or more, found " + shortestText(quality.rmsReprojectionPx));
+  quality.views = int(r.integer("views", 0, 1'000'000));
+  quality.corners = int(r.integer("corners", 0, 1'000'000'000));
+  quality.date = r.dateText("date");
+  return quality;
+}
+
+bool onSensor(const glm::dvec2& point, const CameraIdentity& camera) {
+  return point.x >= -0.5 && point.x <= camera.sensorWidthPx - 0.5 && point.y >= -0.5 &&
+         point.y <= camera.sensorHeightPx - 0.5;
+}
+
+glm::dvec2 readPrincipalPoint(FieldReader& r, const CameraIdentity& camera) {
+  const std::vector<double> centre =
+      r.quantityArray("principal_point", detail::kUnitPx, {2, "x and y"});
+  const glm::dvec2 point{centre[0], centre[1]};
+  r.require(onSensor(point, camera), "principal_point",
+            "expected a point on the " + std::to_string(camera.sensorWidthPx) + " x " +
+                std::to_string(camera.sensorHeightPx) + " sensor, found (" +
+                shortestText(centre[0]) + ", " + shortestText(centre[1]) + ")");
+  return point;
+}
+
+KannalaBrandtLens readLens(FieldReader r, const CameraIdentity& camera, GeometricQuality& quality) {
+  r.onlyKeys({"model", "k", "principal_point", "aspect", "max_theta", "fit"});
+  const std::string model = r.string("model");
+  r.require(model == detail::kLensModelName, "model",
+            "expected \"kannala-brandt\", found \"" + model + "\"");
+  KannalaBrandtLens lens;
+  const std::vector<double> k = r.quantityArray("k", detail::kUnitPx, {5, "k1 to k5"});
+  std::copy(k.begin(), k.end(), lens.kPx.begin());
+  lens.principalPointPx = readPrincipalPoint(r, camera);
+  lens.aspect = r.number("aspect");
+  r.require(lens.aspect > 0.0, "aspect",
+            "expected a ratio above 0, found " + shortestText(lens.aspect));
+  lens.maxThetaRad = r.angleRad("max_theta");
+  r.require(lens.maxThetaRad > 0.0 && lens.maxThetaRad <= std::numbers::pi, "max_theta",
+            "expected an angle above 0 and at most 180 deg, found " +
+                shortestText(lens.maxThetaRad * 180.0 / std::numbers::pi) + " deg");
+  if (const std::optional<const char*> defect = lensDefect(lens); defect && r.ok())
+    r.fail("k", CalibFileError::BadValue, *defect);
+  quality = readGeometricFit(r.section("fit"));
+  return lens;
+}
+
+CameraOrientation readOrientation(FieldReader r) {
+  r.onlyKeys({"image_rotation", "tilt", "tilt_azimuth"});
+  CameraOrientation orientation;
+  orientation.imageRotationDeg = r.angleDeg("image_rotation");
+  orientation.tiltDeg = r.angleDeg("tilt");
+  orientation.tiltAzimuthDeg = r.angleDeg("tilt_azimuth");
+  return orientation;
+}
+
+CameraCalibration readCalibration(FieldReader& root) {
+  CameraCalibration calibration;
+  root.onlyKeys({"format", "version", "camera", "photometric", "geometric", "orientation"});
+  calibration.camera = readCamera(root.section("camera"));
+  if (std::optional<FieldReader> photometric = root.optionalSection("photometric"))
+    calibration.photometric = readPhotometric(*photometric, calibration.camera.pixelFormat,
+                                              calibration.photometricQuality);
+  if (std::optional<FieldReader> geometric = root.optionalSection("geometric"))
+    calibration.lens = readLens(*geometric, calibration.camera, calibration.geometricQuality);
+  calibration.orientation = readOrientation(root.section("orientation"));
+  return calibration;
+}
+
+}  // namespace
+
+std::expected<CameraCalibration, CalibFileFailure> parseCameraFile(const std::string& text,
+                                                                   const std::string& sourceName) {
+  const auto document = detail::parseToml(text, sourceName);
+  if (!document) return std::unexpected(document.error());
+  detail::ReadStatus status{sourceName, std::nullopt};
+  FieldReader root(*document, "", status);
+  readHeader(root);  // first: a newer file is refused for its version, not for its new fields
+  CameraCalibration calibration = readCalibration(root);
+  if (!status.ok()) return std::unexpected(*status.failure);
+  return calibration;
+}
+
+std::expected<CameraCalibration, CalibFileFailure> loadCameraFile(
+    const std::filesystem::path& path) {
+  const auto text = detail::readWholeFile(path, "camera file");
+  if (!text) return std::unexpected(text.error());
+  return parseCameraFile(*text, path.string());
+}
+
+std::expected<void, CalibFileFailure> saveCameraFile(const CameraCalibration& calibration,
+                                                     const std::filesystem::path& path) {
+  const std::string text = formatCameraFile(calibration);
+  // Never write a file that would not load: the same checks, before the old file is touched.
+  if (auto checked = parseCameraFile(text, path.string()); !checked)
+    return std::unexpected(CalibFileFailure{checked.error().cause,
+                                            checked.error().message + ", so nothing was written"});
+  return detail::writeTextFile(path, text, "camera file");
+}
+
+}  // namespace vem::calib::io

@@ -1,0 +1,53 @@
+#include "camera_output.h"
+
+#include <chrono>
+#include <ctime>
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "calib/io/camera_file.h"
+#include "frame_arguments.h"
+
+namespace vem::calibtool {
+
+int reportFailure(const std::string& sentence, int exitCode) {
+  spdlog::error("{}", sentence);
+  return exitCode;
+}
+
+std::expected<std::optional<calib::CameraCalibration>, std::string> loadCameraToMerge(
+    const std::filesystem::path& path) {
+  auto existing = calib::io::loadCameraFile(path);
+  if (existing) return std::optional(std::move(*existing));
+  if (existing.error().cause == calib::io::CalibFileError::NotFound) return std::nullopt;
+  return std::unexpected(existing.error().message +
+                         " (the output file must load before it is updated)");
+}
+
+calib::CameraCalibration newCameraFor(const calib::RawFrame& frame) {
+  calib::CameraCalibration calibration;
+  calibration.camera.sensorWidthPx = frame.width;
+  calibration.camera.sensorHeightPx = frame.height;
+  calibration.camera.pixelFormat = frame.format;
+  return calibration;
+}
+
+std::optional<std::string> frameMismatch(const calib::CameraIdentity& camera,
+                                         const std::string& cameraPath,
+                                         const calib::RawFrame& frame) {
+  if (frame.width == camera.sensorWidthPx && frame.height == camera.sensorHeightPx &&
+      frame.format == camera.pixelFormat)
+    return std::nullopt;
+  return fmt::format("the frames are {} but the camera in {} is {} x {} {}", describeFrame(frame),
+                     cameraPath, camera.sensorWidthPx, camera.sensorHeightPx,
+                     calib::pixelFormatName(camera.pixelFormat));
+}
+
+std::string utcDateNow() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(now));
+}
+
+}  // namespace vem::calibtool

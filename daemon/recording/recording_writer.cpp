@@ -1,0 +1,175 @@
+#include "recording/recording_writer.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <exception>
+#include <string>
+
+namespace vem::recording {
+namespace {
+
+std::string errnoText(int error) { return std::strerror(error); }
+
+// fdatasync, accepting files that cannot be synced (pipes, /dev/full): nothing to make durable.
+bool syncData(int fd) {
+  if (::fdatasync(fd) == 0) return true;
+  return errno == EINVAL || errno == EROFS;
+}
+
+}  // namespace
+
+RecordingWriter::RecordingWriter(std::filesystem::path path, FileDescriptor fd,
+                                 RecordingHeader header, WriterOptions options)
+    : path_(std::move(path)),
+      fd_(std::move(fd)),
+      header_(std::move(header)),
+      options_(options),
+      codec_(options.zstdLevel) {}
+
+RecordingWriter::RecordingWriter(RecordingWriter&&) noexcept = default;
+RecordingWriter& RecordingWriter::operator=(RecordingWriter&&) noexcept = default;
+
+RecordingWriter::~RecordingWriter() {
+  if (fd_.valid()) (void)close();
+}
+
+std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
+    const std::filesystem::path& path, const RecordingHeader& header, WriterOptions options) {
+  const std::string name = path.string();
+  RecordingHeader h = header;
+  h.formatVersion = kFormatVersion;
+  if (const std::string problem = headerProblem(h, ReadLimits{}); !problem.empty()) {
+    return std::unexpected(
+        RecordingFailure{RecordingError::BadHeader, name + ": cannot record: " + problem});
+  }
+  const int flags = O_WRONLY | O_CREAT | O_CLOEXEC | (options.replaceExisting ? O_TRUNC : O_EXCL);
+  FileDescriptor fd(::open(path.c_str(), flags, 0644));
+  if (!fd.valid()) {
+    const int error = errno;
+    return std::unexpected(RecordingFailure{
+        RecordingError::WriteFailed,
+        name + (error == EEXIST ? ": a file is already there (refusing to overwrite it)"
+                                : ": cannot create the recording (" + errnoText(error) + ")")});
+  }
+  RecordingWriter writer(path, std::move(fd), std::move(h), options);
+  if (auto written = writer.writeAtEnd(encodeHeaderRecord(writer.header_), "the header");
+      !written) {
+    writer.fd_ = FileDescriptor();
+    if (!options.replaceExisting) ::unlink(path.c_str());  // ours, and holding no frame
+    return std::unexpected(written.error());
+  }
+  if (!syncData(writer.fd_.get())) {
+    const int error = errno;
+    writer.fd_ = FileDescriptor();
+    return std::unexpected(RecordingFailure{
+        RecordingError::WriteFailed, name + ": cannot flush the header (" + errnoText(error) + ")"});
+  }
+  return writer;
+}
+
+std::expected<void, RecordingFailure> RecordingWriter::writeAtEnd(
+    const std::vector<std::byte>& bytes, const std::string& what) {
+  std::size_t done = 0;
+  int error = 0;
+  // One pwrite() for the whole record; the loop only continues a write a signal interrupted
+  // part-way.
+  while (done < bytes.size()) {
+    const ssize_t n =
+        ::pwrite(fd_.get(), bytes.data() + done, bytes.size() - done, off_t(end_ + done));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      error = n < 0 ? errno : EIO;
+      break;
+    }
+    done += std::size_t(n);
+  }
+  if (error == 0) {
+    end_ += bytes.size();
+    return {};
+  }
+  if (done > 0) (void)::ftruncate(fd_.get(), off_t(end_));  // best effort: drop the partial record
+  return std::unexpected(RecordingFailure{
+      RecordingError::WriteFailed,
+      path_.string() + ": cannot write " + what + " (" + errnoText(error) + "); the " +
+          std::to_string(entries_.size()) + " frames before it stay readable"});
+}
+
+std::string RecordingWriter::frameProblem(std::uint64_t seq, const calib::RawFrame& frame) const {
+  if (frame.width != header_.sensorWidthPx || frame.height != header_.sensorHeightPx ||
+      frame.format != header_.pixelFormat) {
+    return "the frame is " + std::to_string(frame.width) + " x " + std::to_string(frame.height) +
+           " " + calib::pixelFormatName(frame.format) + " (expected the header's " +
+           std::to_string(header_.sensorWidthPx) + " x " + std::to_string(header_.sensorHeightPx) +
+           " " + calib::pixelFormatName(header_.pixelFormat) + ")";
+  }
+  if (frame.codes.size() != frameBytes(header_) / 2) {
+    return "the frame holds " + std::to_string(frame.codes.size()) + " codes (expected " +
+           std::to_string(frameBytes(header_) / 2) + ")";
+  }
+  if (!entries_.empty() && seq <= entries_.back().seq) {
+    return "sequence number " + std::to_string(seq) + " does not follow " +
+           std::to_string(entries_.back().seq) + " (expected increasing numbers)";
+  }
+  return {};
+}
+
+std::expected<void, RecordingFailure> RecordingWriter::append(std::uint64_t seq,
+                                                              std::int64_t captureTsNs,
+                                                              const calib::RawFrame& frame,
+                                                              const LightSet* lights) {
+  if (!fd_.valid()) {
+    return std::unexpected(RecordingFailure{
+        RecordingError::Closed, path_.string() + ": cannot append a frame to a closed recording"});
+  }
+  if (const std::string problem = frameProblem(seq, frame); !problem.empty()) {
+    return std::unexpected(RecordingFailure{
+        RecordingError::InvalidFrame, path_.string() + ": cannot record the frame: " + problem});
+  }
+  try {
+    codec_.encodeRecord(seq, captureTsNs, frame, lights, record_);
+  } catch (const std::exception& e) {
+    return std::unexpected(RecordingFailure{
+        RecordingError::WriteFailed, path_.string() + ": cannot compress frame " +
+                                         std::to_string(seq) + " (" + e.what() + ")"});
+  }
+  const std::uint64_t offset = end_;
+  auto written = writeAtEnd(record_, "frame " + std::to_string(seq));
+  if (!written) return written;
+  entries_.push_back({seq, captureTsNs, offset});
+  if (options_.syncEveryFrames > 0 && ++framesSinceSync_ >= options_.syncEveryFrames) {
+    framesSinceSync_ = 0;
+    if (!syncData(fd_.get())) {
+      const int error = errno;
+      return std::unexpected(RecordingFailure{
+          RecordingError::WriteFailed, path_.string() + ": cannot flush frame " +
+                                           std::to_string(seq) + " to disk (" +
+                                           errnoText(error) + ")"});
+    }
+  }
+  return {};
+}
+
+std::expected<void, RecordingFailure> RecordingWriter::close() {
+  if (!fd_.valid()) {
+    return std::unexpected(
+        RecordingFailure{RecordingError::Closed, path_.string() + ": the recording is closed"});
+  }
+  std::expected<void, RecordingFailure> result =
+      writeAtEnd(encodeTrailer(entries_, end_), "the index");
+  if (result && !syncData(fd_.get())) {
+    result = std::unexpected(RecordingFailure{
+        RecordingError::WriteFailed,
+        path_.string() + ": cannot flush the recording to disk (" + errnoText(errno) + ")"});
+  }
+  if (!fd_.close() && result) {
+    result = std::unexpected(RecordingFailure{
+        RecordingError::WriteFailed,
+        path_.string() + ": cannot close the recording (" + errnoText(errno) + ")"});
+  }
+  return result;
+}
+
+}  // namespace vem::recording

@@ -1,0 +1,130 @@
+// `vemtool info F.vem`: what a VEM recording holds (docs/vem-format.md): its header, frame count,
+// time span and rate, sequence and timestamp gaps, damaged records and the state of its index.
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "recording/recording_reader.h"
+
+namespace vem::tool {
+namespace {
+
+struct InfoOptions {
+  std::string input;
+  bool json = false;
+};
+
+nlohmann::ordered_json summaryJson(const std::string& file, const recording::RecordingSummary& s) {
+  const recording::RecordingHeader& h = s.header;
+  nlohmann::ordered_json j;
+  j["file"] = file;
+  j["format_version"] = h.formatVersion;
+  j["file_bytes"] = s.fileBytes;
+  j["camera"] = {{"model", h.cameraModel}, {"serial", h.cameraSerial}};
+  j["sensor"] = {{"width_px", h.sensorWidthPx},
+                 {"height_px", h.sensorHeightPx},
+                 {"pixel_format", calib::pixelFormatName(h.pixelFormat)}};
+  j["nominal_rate_hz"] = h.nominalRateHz;
+  j["calibration_toml_bytes"] = h.calibrationToml.size();
+  j["created_unix_ns"] = h.createdUnixNs;
+  j["writer"] = {{"name", h.writerName}, {"version", h.writerVersion}};
+  j["frames"] = s.frames;
+  j["frames_with_lights"] = s.framesWithLights;
+  j["first_seq"] = s.firstSeq ? nlohmann::ordered_json(*s.firstSeq) : nullptr;
+  j["last_seq"] = s.lastSeq ? nlohmann::ordered_json(*s.lastSeq) : nullptr;
+  j["first_ts_ns"] = s.firstTsNs ? nlohmann::ordered_json(*s.firstTsNs) : nullptr;
+  j["last_ts_ns"] = s.lastTsNs ? nlohmann::ordered_json(*s.lastTsNs) : nullptr;
+  j["mean_rate_hz"] = s.meanRateHz;
+  j["sequence_gaps"] = s.sequenceGaps;
+  j["missing_frames"] = s.missingFrames;
+  j["sequence_disorders"] = s.sequenceDisorders;
+  j["timestamp_gaps"] = s.timestampGaps;
+  j["longest_interval_ns"] = s.longestIntervalNs;
+  j["damaged_records"] = s.damage.damagedRecords;
+  j["damaged_bytes"] = s.damage.damagedBytes;
+  j["truncated_tail_bytes"] = s.damage.truncatedTailBytes;
+  j["unknown_records"] = s.damage.unknownRecords;
+  j["index"] = recording::indexStateName(s.index);
+  j["index_entries"] = s.indexEntries;
+  return j;
+}
+
+std::string summaryText(const std::string& file, const recording::RecordingSummary& s) {
+  const recording::RecordingHeader& h = s.header;
+  std::string t = fmt::format("{}: VEM recording, format version {}, {} bytes\n", file,
+                              h.formatVersion, s.fileBytes);
+  t += fmt::format("camera:      {} (serial {}), {} x {} {}, nominal {} Hz\n", h.cameraModel,
+                   h.cameraSerial, h.sensorWidthPx, h.sensorHeightPx,
+                   calib::pixelFormatName(h.pixelFormat), h.nominalRateHz);
+  t += fmt::format("calibration: {}\n", h.calibrationToml.empty()
+                                            ? std::string("none")
+                                            : fmt::format("{} bytes of TOML", h.calibrationToml.size()));
+  t += fmt::format("writer:      {} {}, created {} ns after 1970 (UTC)\n", h.writerName,
+                   h.writerVersion, h.createdUnixNs);
+  t += fmt::format("frames:      {}", s.frames);
+  if (s.firstSeq) t += fmt::format(" (seq {} .. {})", *s.firstSeq, *s.lastSeq);
+  t += fmt::format(", {} with lights\n", s.framesWithLights);
+  if (s.firstTsNs) {
+    t += fmt::format("time:        {:.3f} s, mean rate {:.3f} Hz\n",
+                     (double(*s.lastTsNs) - double(*s.firstTsNs)) * 1e-9, s.meanRateHz);
+  }
+  t += fmt::format(
+      "gaps:        {} in sequence ({} frames missing, {} out of order), {} in time (> 1.5 frame "
+      "periods; longest interval {:.3f} ms)\n",
+      s.sequenceGaps, s.missingFrames, s.sequenceDisorders, s.timestampGaps,
+      double(s.longestIntervalNs) * 1e-6);
+  t += fmt::format("damage:      {} damaged records ({} bytes skipped), truncated tail {} bytes, {} "
+                   "unknown records\n",
+                   s.damage.damagedRecords, s.damage.damagedBytes, s.damage.truncatedTailBytes,
+                   s.damage.unknownRecords);
+  t += fmt::format("index:       {}", recording::indexStateName(s.index));
+  if (s.index == recording::IndexState::Valid || s.index == recording::IndexState::Stale) {
+    t += fmt::format(" ({} entries)", s.indexEntries);
+  }
+  if (s.index != recording::IndexState::Valid) t += "; `vemtool recover` rebuilds it";
+  return t + "\n";
+}
+
+int runInfo(const InfoOptions& o) {
+  auto reader = recording::RecordingReader::open(o.input);
+  if (!reader) {
+    spdlog::error("{}", reader.error().message);
+    return EXIT_FAILURE;
+  }
+  auto summary = reader->summarize();
+  if (!summary) {
+    spdlog::error("{}", summary.error().message);
+    return EXIT_FAILURE;
+  }
+  if (o.json) {
+    std::cout << summaryJson(o.input, *summary).dump(2) << '\n';
+  } else {
+    std::cout << summaryText(o.input, *summary);
+  }
+  return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<InfoOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "info", "Describe a VEM recording: header, frames, rate, gaps, damage, index");
+  cmd->footer("Example:\n  vemtool info session.vem --format json\n"
+              "Reads every record (checking each CRC32C) but decompresses no pixels.");
+  cmd->add_option("file", options->input, "The recording (.vem)")->required();
+  cmd->add_option_function<std::string>(
+         "--format", [options](const std::string& f) { options->json = f == "json"; },
+         "text (default) | json")
+      ->check(CLI::IsMember({"text", "json"}));
+  cmd->callback([options, &exitCode] { exitCode = runInfo(*options); });
+}
+
+}  // namespace vem::tool

@@ -1,0 +1,356 @@
+// vemcalib as a user meets it (runs the built executable): the path from a simulated chart to a
+// camera file, every refusal of `vemcalib photometric` (one sentence on stderr, a non-zero exit,
+// the old output file byte-identical), `apply` turning a frame back into the map the camera saw,
+// and an example in every command's --help.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "calib/io/camera_file.h"
+#include "calib/io/patch_file.h"
+#include "calib/io/raw_frame_file.h"
+#include "core/env_map.h"
+#include "mapio/map_file.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace vem::calib;
+
+const fs::path kExampleCamera =
+    fs::path(__FILE__).parent_path() / "../../config/camera-example.toml";
+
+struct ToolRun {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+int lineCount(const std::string& text) { return int(std::count(text.begin(), text.end(), '\n')); }
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+ToolRun runIn(const fs::path& dir, const std::string& args) {
+  const fs::path out = dir / "stdout", err = dir / "stderr";
+  const std::string command =
+      std::string(VEMCALIB_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(command.c_str());
+  return {WEXITSTATUS(status), readFile(out), readFile(err)};
+}
+
+// One chart simulated from the example camera, shared by the tests (simulating takes a second).
+class VemcalibCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    chartDir_ = fs::temp_directory_path() / ("vemcalib_cli_chart_" + std::to_string(::getpid()));
+    fs::create_directories(chartDir_);
+    simulateRun_ = runIn(chartDir_, "simulate patches --camera " + kExampleCamera.string() +
+                                        " --out " + (chartDir_ / "sim").string() + " --frames 2");
+  }
+  static void TearDownTestSuite() { fs::remove_all(chartDir_); }
+
+  void SetUp() override {
+    ASSERT_EQ(simulateRun_.exitCode, 0) << simulateRun_.err;
+    dir_ = fs::temp_directory_path() / ("vemcalib_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  [[nodiscard]] ToolRun run(const std::string& args) const { return runIn(dir_, args); }
+  [[nodiscard]] static fs::path sim(const std::string& name) { return chartDir_ / "sim" / name; }
+  [[nodiscard]] static std::string frames() {
+    return sim("patches-1.png").string() + " " + sim("patches-2.png").string();
+  }
+  [[nodiscard]] static std::vector<PatchSpec> chart() {
+    return *io::loadPatchFile(sim("patches.toml"));
+  }
+  [[nodiscard]] static PatchSpec patch(const std::string& name) {
+    const std::vector<PatchSpec> all = chart();
+    return *std::ranges::find(all, name, &PatchSpec::name);
+  }
+
+  // `vemcalib photometric` on the chart with the example camera's levels, into dir/OUT.
+  [[nodiscard]] ToolRun photometric(const std::string& framesArg, const fs::path& patches,
+                                    const std::string& extra = "") const {
+    return run("photometric --frame " + framesArg + " --patches " + patches.string() +
+               " --bits 12 --black-level 64 --saturation 4095 --out " + out().string() + extra);
+  }
+  [[nodiscard]] fs::path out() const { return dir_ / "camera.toml"; }
+
+  // Puts the example camera at the output path, for refusals to leave alone.
+  std::string existingOutput() const {
+    fs::copy_file(kExampleCamera, out(), fs::copy_options::overwrite_existing);
+    return readFile(out());
+  }
+
+  [[nodiscard]] fs::path patchFile(const std::vector<PatchSpec>& patches) const {
+    const fs::path path = dir_ / "patches.toml";
+    EXPECT_TRUE(io::savePatchFile(patches, path));
+    return path;
+  }
+
+  // The first chart frame with `patchName`'s region set to `code` in every channel.
+  [[nodiscard]] std::string frameWithPatchAt(const std::string& patchName,
+                                             std::uint16_t code) const {
+    RawFrame frame = *io::loadRawFrame(sim("patches-1.png"), 12);
+    const PatchSpec p = patch(patchName);
+    for (int v = p.y; v < p.y + p.height; ++v)
+      for (int u = p.x; u < p.x + p.width; ++u)
+        for (int c = 0; c < frame.format.channels; ++c) frame.codes[frame.index(u, v, c)] = code;
+    const fs::path path = dir_ / ("damaged-" + patchName + ".png");
+    EXPECT_TRUE(io::saveRawFrame(frame, path));
+    return path.string();
+  }
+
+  // The refusal contract: one sentence on stderr, a non-zero exit, the old output unchanged.
+  void expectRefused(const ToolRun& r, const std::string& before,
+                     const std::string& mentions) const {
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("vemcalib: error: ", 0), 0U) << r.err;
+    EXPECT_TRUE(contains(r.err, mentions)) << r.err;
+    EXPECT_EQ(readFile(out()), before) << "the refused run changed " << out();
+  }
+
+  fs::path dir_;
+  static inline fs::path chartDir_;
+  static inline ToolRun simulateRun_;
+};
+
+TEST_F(VemcalibCli, NewUsersPathFromSimulatedChartToCameraFileRecoversTheExampleResponse) {
+  // The command `simulate patches` prints is the one the user runs next.
+  const std::string printed = simulateRun_.out;
+  const std::size_t next = printed.find("next: vemcalib ");
+  ASSERT_NE(next, std::string::npos) << printed;
+  std::string command = printed.substr(next + 15, printed.find('\n', next) - next - 15);
+  command.replace(command.find("--out "), std::string::npos, "--out " + out().string());
+  const ToolRun fit = run(command);
+  ASSERT_EQ(fit.exitCode, 0) << fit.err;
+  EXPECT_EQ(fit.err, "");
+  for (const char* row : {"p1 ", "p6 ", "c1 ", "c2 "})
+    EXPECT_TRUE(contains(fit.out, row)) << fit.out;
+  EXPECT_TRUE(contains(fit.out, "check")) << fit.out;
+  EXPECT_TRUE(contains(fit.out, "rms residual")) << fit.out;
+
+  const auto truth = io::loadCameraFile(kExampleCamera);
+  const auto fitted = io::loadCameraFile(out());
+  ASSERT_TRUE(fitted.has_value()) << fitted.error().message;
+  const auto& want = std::get<LogResponse>(truth->photometric->response);
+  const auto& got = std::get<LogResponse>(fitted->photometric->response);
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_NEAR(got.aCode[c], want.aCode[c], 1.0);
+    EXPECT_NEAR(got.bCodePerLn[c] / want.bCodePerLn[c], 1.0, 0.005);
+  }
+  EXPECT_EQ(fitted->photometricQuality.fitPatches, 6);
+  EXPECT_EQ(fitted->photometricQuality.checkPatches, 2);
+
+  const ToolRun show = run("show " + out().string());
+  ASSERT_EQ(show.exitCode, 0) << show.err;
+  EXPECT_TRUE(contains(show.out, "log response")) << show.out;
+  EXPECT_TRUE(contains(show.out, "1280 x 1024 px, RGB12")) << show.out;
+  EXPECT_TRUE(contains(show.out, "geometric:    none")) << show.out;
+}
+
+TEST_F(VemcalibCli, PhotometricReplacesOnlyThePhotometricSectionOfAnExistingFile) {
+  existingOutput();
+  const ToolRun r =
+      run("photometric --frame " + frames() + " --patches " + sim("patches.toml").string() +
+          " --out " + out().string());  // bits and levels from the file
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto before = io::loadCameraFile(kExampleCamera);
+  const auto after = io::loadCameraFile(out());
+  ASSERT_TRUE(after.has_value()) << after.error().message;
+  EXPECT_EQ(after->camera.model, before->camera.model);
+  EXPECT_EQ(after->lens->kPx, before->lens->kPx);
+  EXPECT_EQ(after->geometricQuality.date, before->geometricQuality.date);
+  EXPECT_EQ(after->photometricQuality.fitPatches, 6);
+  EXPECT_NE(after->photometricQuality.date, before->photometricQuality.date);
+  EXPECT_EQ(after->photometric->blackLevelCode, 64.0);
+}
+
+TEST_F(VemcalibCli, RefusesFewerThanThreeFitPatchesWithoutTouchingTheOutput) {
+  const std::string before = existingOutput();
+  std::vector<PatchSpec> few;
+  for (const char* name : {"p1", "p4", "c1", "c2"}) few.push_back(patch(name));
+  expectRefused(photometric(frames(), patchFile(few)), before, "at least 3");
+}
+
+TEST_F(VemcalibCli, RefusesASaturatedPatchWithoutTouchingTheOutput) {
+  const std::string before = existingOutput();
+  expectRefused(photometric(frameWithPatchAt("p6", 4095), sim("patches.toml")), before,
+                "'p6' is saturated");
+}
+
+TEST_F(VemcalibCli, RefusesAPatchUnderTheBlackLevelWithoutTouchingTheOutput) {
+  const std::string before = existingOutput();
+  expectRefused(photometric(frameWithPatchAt("p1", 60), sim("patches.toml")), before,
+                "'p1' is under the black level");
+}
+
+TEST_F(VemcalibCli, RefusesCodesThatDoNotIncreaseWithLuminance) {
+  const std::string before = existingOutput();
+  std::vector<PatchSpec> swapped = chart();
+  std::swap(swapped[1].luminanceCdM2, swapped[3].luminanceCdM2);  // p2 and p4
+  expectRefused(photometric(frames(), patchFile(swapped)), before, "do not increase");
+}
+
+TEST_F(VemcalibCli, RefusesAFitResidualAboveMaxResidualWhichIsSettable) {
+  const std::string before = existingOutput();
+  std::vector<PatchSpec> off = chart();
+  off[2].luminanceCdM2 *= 1.02;  // p3 2 % off the curve
+  const fs::path patches = patchFile(off);
+  const ToolRun refused = photometric(frames(), patches, " --max-residual 0.5");
+  expectRefused(refused, before, "--max-residual");
+  EXPECT_TRUE(contains(refused.out, "p3 ")) << "the table still shows the fit";
+  EXPECT_EQ(photometric(frames(), patches).exitCode, 0) << "2 % passes the default 3 %";
+}
+
+TEST_F(VemcalibCli, RefusesACheckErrorAboveMaxCheckErrorWhichIsSettable) {
+  const std::string before = existingOutput();
+  std::vector<PatchSpec> off = chart();
+  off[6].luminanceCdM2 *= 1.04;  // c1 4 % off
+  const fs::path patches = patchFile(off);
+  expectRefused(photometric(frames(), patches, " --max-check-error 2"), before,
+                "--max-check-error");
+  EXPECT_EQ(photometric(frames(), patches).exitCode, 0) << "4 % passes the default 5 %";
+}
+
+TEST_F(VemcalibCli, RefusesAPatchRegionBeyondTheFrameNamingThePatch) {
+  const std::string before = existingOutput();
+  std::vector<PatchSpec> outside = chart();
+  outside[4].x = 1250;
+  expectRefused(photometric(frames(), patchFile(outside)), before, "patch \"p5\": region");
+}
+
+TEST_F(VemcalibCli, RefusesFramesThatDoNotFitTheOutputsCamera) {
+  const std::string before = existingOutput();
+  RawFrame small = RawFrame::blank(64, 48, {3, 12});
+  ASSERT_TRUE(io::saveRawFrame(small, dir_ / "small.png"));
+  std::vector<PatchSpec> tiny{{"a", 0, 0, 4, 4, 1, false}};
+  expectRefused(photometric((dir_ / "small.png").string(), patchFile(tiny)), before,
+                "the frames are 64 x 48 RGB12 but the camera in");
+}
+
+TEST_F(VemcalibCli, NeverOverwritesAnOutputFileThatDoesNotLoad) {
+  std::ofstream(out()) << "format = \"vemcast-camera\"\nversion = 7\n";
+  const std::string before = readFile(out());
+  expectRefused(photometric(frames(), sim("patches.toml")), before, "unknown version 7");
+}
+
+TEST_F(VemcalibCli, CorruptFrameAndBadExposureGiveOneSentence) {
+  const std::string before = existingOutput();
+  const std::string png = readFile(sim("patches-1.png"));
+  std::ofstream(dir_ / "cut.png", std::ios::binary) << png.substr(0, png.size() / 2);
+  expectRefused(photometric((dir_ / "cut.png").string(), sim("patches.toml")), before, "cut.png");
+  expectRefused(photometric(sim("patches-1.png").string() + "@-5", sim("patches.toml")), before,
+                "positive number of microseconds");
+}
+
+TEST_F(VemcalibCli, ShowRefusesABadCameraFileWithTheLoadersSentenceAndExit2) {
+  std::string text = readFile(kExampleCamera);
+  text.replace(text.find("unit = \"px\" }     # k1"), 13, "unit = \"mm\" }");
+  std::ofstream(dir_ / "bad.toml") << text;
+  const ToolRun r = run("show " + (dir_ / "bad.toml").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "bad.toml: geometric.k: expected unit \"px\", found \"mm\""))
+      << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
+TEST_F(VemcalibCli, ShowPrintsTheExampleCamerasModelFieldOfViewResidualsAndDates) {
+  const ToolRun r = run("show " + kExampleCamera.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* part : {"HDRC-Example", "log response", "field of view 190 deg", "rms residual",
+                           "rms reprojection", "2026-11-22T00:00:00Z"})
+    EXPECT_TRUE(contains(r.out, part)) << part << "\n" << r.out;
+}
+
+// A smooth sky whose red follows the azimuth and blue the elevation, in cd/m2: a channel swap, a
+// mirrored azimuth or an upside-down map all change the answer.
+glm::dvec3 testSky(const glm::dvec3& dir) {
+  const double phi = std::atan2(dir.z, dir.x);
+  return {200.0 * (1.5 + std::sin(phi)), 120.0, 30.0 * (1.2 + dir.y)};
+}
+
+TEST_F(VemcalibCli, ApplyTurnsASimulatedFrameBackIntoTheSkyTheCameraSaw) {
+  vem::EnvMap sky = vem::EnvMap::filled(vem::MapLayout::Sphere, 256, 128, glm::vec3(0.0F));
+  for (int y = 0; y < sky.height; ++y)
+    for (int x = 0; x < sky.width; ++x)
+      sky.set(x, y, glm::vec3(testSky(vem::pixelCentreDirection(sky, x, y))));
+  ASSERT_TRUE(vem::mapio::saveMap(sky, dir_ / "sky.exr"));
+  const std::string camera = kExampleCamera.string();
+  const ToolRun simulated =
+      run("simulate frame --camera " + camera + " --map " + (dir_ / "sky.exr").string() +
+          " --noise 0 --out " + (dir_ / "raw.png").string());
+  ASSERT_EQ(simulated.exitCode, 0) << simulated.err;
+  const ToolRun applied =
+      run("apply --camera " + camera + " --frame " + (dir_ / "raw.png").string() + " --out " +
+          (dir_ / "map.exr").string() + " --width 64 --mask-out " + (dir_ / "mask.png").string());
+  ASSERT_EQ(applied.exitCode, 0) << applied.err;
+  EXPECT_TRUE(contains(applied.out, "next: vemtool lights --in")) << applied.out;
+  const auto map = vem::mapio::loadMap(dir_ / "map.exr");
+  ASSERT_TRUE(map.has_value()) << map.error().message;
+  ASSERT_EQ(map->layout, vem::MapLayout::Hemisphere);
+  ASSERT_EQ(map->height, 16);
+  const auto mask = io::loadRawFrame(dir_ / "mask.png");
+  ASSERT_TRUE(mask.has_value()) << mask.error().message;
+  for (int y = 0; y < map->height; ++y) {
+    for (int x = 0; x < map->width; ++x) {
+      const glm::dvec3 want = testSky(vem::pixelCentreDirection(*map, x, y));
+      const glm::vec3 got = map->at(x, y);
+      EXPECT_EQ(mask->at(x, y), 255)
+          << x << ", " << y << ": the 190-degree lens sees the hemisphere";
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(double(got[c]) / want[c], 1.0, 0.02)
+            << "pixel " << x << ", " << y << " channel " << c;
+    }
+  }
+}
+
+TEST_F(VemcalibCli, ApplyRefusesACameraWithoutLensAndAFrameOfAnotherSize) {
+  CameraCalibration noLens = *io::loadCameraFile(kExampleCamera);
+  noLens.lens.reset();
+  ASSERT_TRUE(io::saveCameraFile(noLens, dir_ / "nolens.toml"));
+  const ToolRun a = run("apply --camera " + (dir_ / "nolens.toml").string() + " --frame " +
+                        sim("patches-1.png").string() + " --out " + (dir_ / "m.exr").string());
+  EXPECT_EQ(a.exitCode, 2);
+  EXPECT_EQ(lineCount(a.err), 1) << a.err;
+  EXPECT_TRUE(contains(a.err, "nolens.toml: the camera has no geometric section")) << a.err;
+  ASSERT_TRUE(io::saveRawFrame(RawFrame::blank(64, 48, {3, 12}), dir_ / "small.png"));
+  const ToolRun b = run("apply --camera " + kExampleCamera.string() + " --frame " +
+                        (dir_ / "small.png").string() + " --out " + (dir_ / "m.exr").string());
+  EXPECT_EQ(b.exitCode, 2);
+  EXPECT_EQ(lineCount(b.err), 1) << b.err;
+  EXPECT_TRUE(contains(b.err, "small.png: the frames are 64 x 48 RGB12 but the camera")) << b.err;
+  EXPECT_FALSE(fs::exists(dir_ / "m.exr"));
+}
+
+TEST_F(VemcalibCli, HelpOfTheToolAndOfEveryCommandShowsAnExample) {
+  for (const char* command :
+       {"", "photometric", "fisheye", "response", "simulate", "apply", "show", "simulate patches",
+        "simulate frame", "simulate boards", "simulate brackets"}) {
+    const ToolRun r = run(std::string(command) + " --help");
+    EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
+    EXPECT_TRUE(contains(r.out, "Example")) << "vemcalib " << command << " --help:\n" << r.out;
+  }
+}
+
+}  // namespace
