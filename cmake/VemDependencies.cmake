@@ -13,6 +13,7 @@ find_package(Protobuf REQUIRED)                  # libprotobuf-dev, protobuf-com
 find_package(Boost REQUIRED)                     # libboost-dev (headers): Boost.CRC, the CRC32C oracle
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)   # libzstd-dev: recorded pixels
 pkg_check_modules(ISAL REQUIRED IMPORTED_TARGET libisal)   # libisal-dev: fast CRC32C of records
+pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)  # libsystemd-dev: vemd's sd_notify
 
 # liquid-dsp (libliquid-dev) ships a static library and a header, without CMake or pkg-config files.
 find_path(LIQUID_INCLUDE_DIR liquid/liquid.h REQUIRED)

@@ -13,3 +13,15 @@ if(VEM_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
   add_link_options(-fsanitize=address,undefined)
 endif()
+
+# VEM_TSAN: ThreadSanitizer for every target configured after this point (vemd's capture and
+# processing threads; CI builds only vemd_tests and vemd with it). Cannot be combined with
+# VEM_SANITIZE (ASan and TSan exclude each other).
+option(VEM_TSAN "Build with ThreadSanitizer (for vemd_tests)" OFF)
+if(VEM_TSAN)
+  if(VEM_SANITIZE)
+    message(FATAL_ERROR "VEM_TSAN and VEM_SANITIZE cannot be combined: use two build folders")
+  endif()
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()

@@ -7,6 +7,7 @@ packages=(
   libglm-dev libnanoflann-dev libopenexr-dev libopencv-dev libcli11-dev nlohmann-json3-dev
   libspdlog-dev libliquid-dev libtomlplusplus-dev
   libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev
+  libsystemd-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-14 libclang-rt-14-dev
 )

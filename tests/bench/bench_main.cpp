@@ -20,6 +20,7 @@
 #include "recording_benchmarks.h"
 #include "report_writer.h"
 #include "stage_benchmarks.h"
+#include "vemd_benchmarks.h"
 
 namespace {
 
@@ -74,6 +75,7 @@ int main(int argc, char** argv) {
   vem::bench::registerStageBenchmarks();
   vem::bench::registerCalibrationBenchmarks();
   vem::bench::registerRecordingBenchmarks();
+  vem::bench::registerVemdBenchmarks();
   vem::bench::registerAccuracyTimingBenchmarks(counts);
   CapturingReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

@@ -102,6 +102,20 @@ void calibrationTable(std::ostringstream& md, const ReportInputs& in) {
                     timeCell(in, "calib/build_remap"), mono, mono < 1000 ? "met" : "NOT met");
 }
 
+void recordingTable(std::ostringstream& md, const ReportInputs& in) {
+  md << "## Recordings\n\nOne 1280x1024 Mono16 frame of the camera simulator per record, zstd level "
+        "1 on split byte planes, CRC32C through ISA-L (docs/vem-format.md), one thread, "
+        "microseconds: median (fastest). Reading includes the file read, the checksum, the "
+        "metadata and the decompression; writing the compression, the checksum and the write (no "
+        "fdatasync).\n\n| stage | time |\n|---|---:|\n";
+  md << "| read + decompress | " << timeCell(in, "recording/read_decompress_Mono16") << " |\n";
+  md << "| compress + write | " << timeCell(in, "recording/write_compress_Mono16") << " |\n\n";
+  const double read = timeOf(in, "recording/read_decompress_Mono16");
+  md << fmt::format("Replay budget: at 300 frames/s a frame has 3333 us; reading takes {:.0f} us of "
+                    "it ({:.0f} frames/s for reading alone).\n\n",
+                    read, 1e6 / read);
+}
+
 void accuracyVersusTime(std::ostringstream& md, const ReportInputs& in,
                         const std::vector<MapErrors>& sphere,
                         const std::filesystem::path& docsDir) {
@@ -189,6 +203,7 @@ std::string writeReport(const ReportInputs& in, const std::filesystem::path& doc
      << cpuModel() << ". Do not edit by hand: rerun the command.\n\n";
   stageTable(md, in);
   calibrationTable(md, in);
+  recordingTable(md, in);
   const auto sphere = perMapErrors(in.counts, MapLayout::Sphere);
   accuracyVersusTime(md, in, sphere, docsDir);
   const std::vector<std::size_t> tableCounts{64, 256, 1024};

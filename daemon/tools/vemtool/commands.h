@@ -11,5 +11,8 @@ void addLightsCommand(CLI::App& app, int& exitCode);   // lights_command.cpp
 void addFiltersCommand(CLI::App& app, int& exitCode);  // filters_command.cpp
 void addInfoCommand(CLI::App& app, int& exitCode);     // info_command.cpp
 void addRecoverCommand(CLI::App& app, int& exitCode);  // recover_command.cpp
+void addSynthCommand(CLI::App& app, int& exitCode);    // synth_command.cpp
+void addExportCommand(CLI::App& app, int& exitCode);   // export_command.cpp
+void addImportCommand(CLI::App& app, int& exitCode);   // import_command.cpp
 
 }  // namespace vem::tool

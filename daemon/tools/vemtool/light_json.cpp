@@ -2,10 +2,9 @@
 
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
-
-#include "core/light_clustering.h"
 
 namespace vem::tool {
 namespace {
@@ -32,7 +31,11 @@ nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ, 
   ClusteringParams params;
   params.clusterBudget = clusterQ;
   params.layout = layout;
-  const Clustering clustering = clusterLights(lights, params);
+  return clusteredFrameJson(lights, clusterLights(lights, params), clusterRadiusRad(params), frame);
+}
+
+nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, const Clustering& clustering,
+                                          std::optional<double> radiusRad, std::uint64_t frame) {
   nlohmann::ordered_json out = frameJson(clustering.clusters, frame);
   std::vector<nlohmann::ordered_json> members(clustering.clusters.lights.size(),
                                               nlohmann::ordered_json::array());
@@ -41,7 +44,7 @@ nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ, 
   }
   for (std::size_t c = 0; c < members.size(); ++c) out["lights"][c]["members"] = members[c];
   out["clustered_from"] = lights.lights.size();
-  out["radius_rad"] = clusterRadiusRad(params);
+  if (radiusRad) out["radius_rad"] = *radiusRad;
   return out;
 }
 

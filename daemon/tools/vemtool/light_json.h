@@ -3,19 +3,29 @@
 // Numbers are the lights' float values written in their shortest round-trip form.
 // A clustered frame adds "clustered_from" (the lights before clustering), "radius_rad" and per
 // cluster "members" (the ids of the lights it holds); its "id" is its seed light's id.
+// vemd's JSON-lines sink (daemon/vemd/sinks/jsonl_light_sink.h) writes the same objects from a
+// clustering it already has, with "radius_rad" only when the radius is known.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
 #include "core/env_map.h"
 #include "core/light.h"
+#include "core/light_clustering.h"
 
 namespace vem::tool {
 
 [[nodiscard]] nlohmann::ordered_json frameJson(const LightSet& lights, std::uint64_t frame);
 [[nodiscard]] nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ,
                                                         MapLayout layout, std::uint64_t frame);
+// The same for a clustering of `lights` made elsewhere (clustering.clusterOfLight has one entry per
+// light); "radius_rad" is written when radiusRad holds a value.
+[[nodiscard]] nlohmann::ordered_json clusteredFrameJson(const LightSet& lights,
+                                                        const Clustering& clustering,
+                                                        std::optional<double> radiusRad,
+                                                        std::uint64_t frame);
 
 }  // namespace vem::tool

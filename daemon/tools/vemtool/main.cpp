@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
   vem::tool::addFiltersCommand(app, exitCode);
   vem::tool::addInfoCommand(app, exitCode);
   vem::tool::addRecoverCommand(app, exitCode);
+  vem::tool::addSynthCommand(app, exitCode);
+  vem::tool::addExportCommand(app, exitCode);
+  vem::tool::addImportCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

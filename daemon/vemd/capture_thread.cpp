@@ -1,0 +1,94 @@
+#include "vemd/capture_thread.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <spdlog/spdlog.h>
+
+namespace vem::vemd {
+
+CaptureThread::CaptureThread(FrameSource& source, FrameQueue<CapturedFrame>& frames,
+                             FrameQueue<CapturedFrame>& spares, const CaptureOptions& options)
+    : source_(source),
+      frames_(frames),
+      spares_(spares),
+      options_(options),
+      backoff_(options.retryInitial),
+      thread_([this] { run(); }) {}
+
+CaptureThread::~CaptureThread() {
+  stop();
+  join();
+}
+
+void CaptureThread::stop() {
+  stop_.store(true);
+  source_.interrupt();
+  backoffWait_.interrupt();
+  frames_.close();
+}
+
+void CaptureThread::join() {
+  if (thread_.joinable()) thread_.join();
+}
+
+void CaptureThread::run() {
+  while (!stop_.load()) {
+    recycleSpares();
+    auto frame = source_.next();
+    if (stop_.load()) break;
+    if (!frame) {
+      if (frame.error().cause == SourceErrorCause::EndOfStream) {
+        spdlog::info("source: {}", frame.error().message);
+        endOfStream_.store(true);
+        break;
+      }
+      if (!backOff(frame.error())) break;
+      continue;
+    }
+    if (failing_) {
+      spdlog::info("source: frames again after {} failed attempt(s)", failedAttempts_);
+      failing_ = false;
+      failedAttempts_ = 0;
+      backoff_ = options_.retryInitial;
+    }
+    deliver(std::move(*frame));
+    if (options_.maxFrames > 0 && delivered_.load() >= options_.maxFrames) {
+      limitReached_.store(true);
+      break;
+    }
+  }
+  frames_.close();
+}
+
+bool CaptureThread::backOff(const SourceError& error) {
+  sourceErrors_.fetch_add(1);
+  ++failedAttempts_;
+  if (!failing_ || failingCause_ != error.cause) {
+    spdlog::warn("source: {} ({}); retrying every {} to {} ms", error.message,
+                 sourceErrorName(error.cause), options_.retryInitial.count(),
+                 options_.retryMax.count());
+    failing_ = true;
+    failingCause_ = error.cause;
+  }
+  const auto wait = backoff_;
+  backoff_ = std::min(options_.retryMax, backoff_ * 2);
+  const std::int64_t deadline =
+      monotonicNowNs() + std::chrono::duration_cast<std::chrono::nanoseconds>(wait).count();
+  return backoffWait_.sleepUntil(deadline) && !stop_.load();
+}
+
+void CaptureThread::deliver(CapturedFrame frame) {
+  std::optional<CapturedFrame> back =
+      options_.lossless ? frames_.pushOrWait(std::move(frame)) : frames_.push(std::move(frame));
+  delivered_.fetch_add(1);
+  if (back) source_.recycle(std::move(*back));
+}
+
+void CaptureThread::recycleSpares() {
+  while (auto spare = spares_.popFor(std::chrono::nanoseconds(0))) {
+    source_.recycle(std::move(*spare));
+  }
+}
+
+}  // namespace vem::vemd

@@ -1,0 +1,23 @@
+// CapturedFrame: one raw frame as a source delivers it to vemd's pipeline, with its identity in
+// time. Sources (replay, synthetic, later cameras) all produce these.
+//
+// Conventions: seq increases by one per frame the source produced (gaps mean frames lost before
+// vemd saw them); captureTsNs is the capture instant in nanoseconds on the source's clock (the
+// recording's for replay, CLOCK_MONOTONIC for live sources); arrivalNs is when vemd received it
+// (CLOCK_MONOTONIC), for the end-to-end latency.
+#pragma once
+
+#include <cstdint>
+
+#include "calib/core/raw_frame.h"
+
+namespace vem::vemd {
+
+struct CapturedFrame {
+  calib::RawFrame frame;
+  std::uint64_t seq = 0;
+  std::int64_t captureTsNs = 0;
+  std::int64_t arrivalNs = 0;
+};
+
+}  // namespace vem::vemd

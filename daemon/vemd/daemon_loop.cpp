@@ -1,0 +1,153 @@
+#include "vemd/daemon_loop.h"
+
+#include <chrono>
+#include <optional>
+#include <utility>
+
+#include <spdlog/spdlog.h>
+
+#include "vemd/capture_thread.h"
+#include "vemd/frame_queue.h"
+
+namespace vem::vemd {
+
+const char* stopReasonName(StopReason reason) {
+  switch (reason) {
+    case StopReason::EndOfStream: return "the source ended";
+    case StopReason::FrameLimit: return "the frame limit was reached";
+    case StopReason::StopRequested: return "a stop was requested";
+  }
+  return "unknown";
+}
+
+namespace {
+
+class NullObserver final : public LoopObserver {};
+
+// The processing thread's work: queue -> pipeline -> sinks -> statistics, and the reports.
+class ProcessingLoop {
+ public:
+  ProcessingLoop(Pipeline& pipeline, SinkSet& sinks, const LoopOptions& options,
+                 const SourceDescription& source, LoopObserver& observer)
+      : pipeline_(pipeline),
+        sinks_(sinks),
+        options_(options),
+        liveClock_(source.liveClock),
+        observer_(observer),
+        stats_(monotonicNowNs()),
+        nextReportNs_(monotonicNowNs() + reportPeriodNs()) {}
+
+  StopReason run(FrameQueue<CapturedFrame>& frames, FrameQueue<CapturedFrame>& spares,
+                 const CaptureThread& capture, const std::atomic<bool>& stopRequested) {
+    for (;;) {
+      if (stopRequested.load()) return StopReason::StopRequested;
+      std::optional<CapturedFrame> captured = frames.popFor(kPollInterval);
+      if (captured) {
+        handle(*captured);
+        (void)spares.push(std::move(*captured));
+      } else if (frames.finished()) {
+        return capture.frameLimitReached() ? StopReason::FrameLimit : StopReason::EndOfStream;
+      }
+      observer_.alive();
+      reportIfDue(frames.counters(), capture.sourceErrors());
+    }
+  }
+
+  // The data flow of one frame.
+  void handle(const CapturedFrame& captured) {
+    if (auto problem = pipeline_.frameProblem(captured.frame)) return refuse(captured, *problem);
+    acceptAgain();
+    const ProcessedFrame& processed = pipeline_.process(captured);
+    const double sinksMicros = feedSinks(processed);
+    stats_.frameProcessed(processed, sinksMicros, monotonicNowNs(), liveClock_);
+    if (stats_.processed() == 1) observer_.firstFrameProcessed();
+  }
+
+  LoopResult finish(StopReason reason, const QueueCounters& queue, std::uint64_t sourceErrors) {
+    for (const DroppedSink& failed : sinks_.closeAll()) {
+      spdlog::error("sink {}: {}", failed.name, failed.message);
+      ++sinkFailures_;
+    }
+    LoopResult result{reason, stats_.totals(monotonicNowNs(), queue, sourceErrors), sinkFailures_};
+    spdlog::info("{}", formatReport(result.totals, "final"));
+    return result;
+  }
+
+ private:
+  [[nodiscard]] std::int64_t reportPeriodNs() const {
+    return std::int64_t(options_.reportEveryS * 1e9);
+  }
+
+  double feedSinks(const ProcessedFrame& processed) {
+    const auto start = std::chrono::steady_clock::now();
+    for (const DroppedSink& failed : sinks_.consume(processed)) {
+      spdlog::error("sink {}: {}; the sink is dropped, the others go on", failed.name,
+                    failed.message);
+      ++sinkFailures_;
+    }
+    return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+        .count();
+  }
+
+  void refuse(const CapturedFrame& captured, const std::string& problem) {
+    stats_.frameRefused();
+    ++refusedInARow_;
+    if (refusedInARow_ == 1) {
+      spdlog::warn(
+          "frame {} refused: {} (refused frames are counted, not logged again until a "
+          "frame is accepted)",
+          captured.seq, problem);
+    }
+  }
+
+  void acceptAgain() {
+    if (refusedInARow_ == 0) return;
+    spdlog::info("frames accepted again after {} refused", refusedInARow_);
+    refusedInARow_ = 0;
+  }
+
+  void reportIfDue(const QueueCounters& queue, std::uint64_t sourceErrors) {
+    if (options_.reportEveryS <= 0.0) return;
+    const std::int64_t now = monotonicNowNs();
+    if (now < nextReportNs_) return;
+    const LoopReport report = stats_.takeWindow(now, queue, sourceErrors);
+    const std::string line = formatReport(report, "stats");
+    spdlog::info("{}", line);
+    observer_.reported(report, line);
+    nextReportNs_ = now + reportPeriodNs();
+  }
+
+  Pipeline& pipeline_;
+  SinkSet& sinks_;
+  const LoopOptions& options_;
+  bool liveClock_;
+  LoopObserver& observer_;
+  LoopStatistics stats_;
+  std::int64_t nextReportNs_;
+  std::uint64_t refusedInARow_ = 0;
+  std::uint64_t sinkFailures_ = 0;
+};
+
+}  // namespace
+
+LoopResult runDaemonLoop(FrameSource& source, Pipeline& pipeline, SinkSet& sinks,
+                         const LoopOptions& options, const std::atomic<bool>& stopRequested,
+                         LoopObserver* observer) {
+  NullObserver none;
+  LoopObserver& watcher = observer != nullptr ? *observer : none;
+  const SourceDescription description = source.describe();
+  FrameQueue<CapturedFrame> frames(options.queueDepth);
+  FrameQueue<CapturedFrame> spares(options.queueDepth + 2);
+  ProcessingLoop processing(pipeline, sinks, options, description, watcher);
+  CaptureThread capture(
+      source, frames, spares,
+      {options.maxFrames, !description.paced, options.retryInitial, options.retryMax});
+  const StopReason reason = processing.run(frames, spares, capture, stopRequested);
+  spdlog::info("stopping: {}", stopReasonName(reason));
+  watcher.stopping();
+  capture.stop();
+  capture.join();
+  return processing.finish(reason, frames.counters(), capture.sourceErrors());
+}
+
+}  // namespace vem::vemd

@@ -1,0 +1,100 @@
+#include "vemd/daemon_setup.h"
+
+#include <filesystem>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "calib/core/raw_frame.h"
+#include "vemd/source_factory.h"
+
+namespace vem::vemd {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// `path` under `dir` when it is relative and a folder is given.
+fs::path under(const std::string& dir, const std::string& path) {
+  const fs::path p(path);
+  return dir.empty() || p.is_absolute() ? p : fs::path(dir) / p;
+}
+
+std::optional<std::string> cameraMismatch(const SourceDescription& source,
+                                          const calib::CameraIdentity& camera) {
+  if (source.sensorWidthPx == camera.sensorWidthPx &&
+      source.sensorHeightPx == camera.sensorHeightPx && source.pixelFormat == camera.pixelFormat) {
+    return std::nullopt;
+  }
+  return fmt::format("{}: the frames are {} x {} {} but the calibration is for a {} x {} {} camera",
+                     source.spec, source.sensorWidthPx, source.sensorHeightPx,
+                     calib::pixelFormatName(source.pixelFormat), camera.sensorWidthPx,
+                     camera.sensorHeightPx, calib::pixelFormatName(camera.pixelFormat));
+}
+
+}  // namespace
+
+LoopOptions loopOptions(const VemdConfig& config) {
+  LoopOptions loop;
+  loop.queueDepth = config.source.queueDepth;
+  loop.maxFrames = config.source.frames;
+  loop.reportEveryS = config.stats.everyS;
+  loop.retryInitial = std::chrono::milliseconds(config.source.retryInitialMs);
+  loop.retryMax = std::chrono::milliseconds(config.source.retryMaxMs);
+  return loop;
+}
+
+SinkConfig sinkConfig(const OutputConfig& output, const ProcessingOptions& processing) {
+  SinkConfig sinks;
+  if (!output.jsonl.empty()) sinks.jsonl = under(output.dir, output.jsonl);
+  if (!output.record.empty()) sinks.record = under(output.dir, output.record);
+  if (output.previewEvery > 0) {
+    sinks.previewDir = output.dir.empty() ? fs::path(".") : fs::path(output.dir);
+    sinks.previewEvery = int(output.previewEvery);
+  }
+  sinks.previewNumbered = output.previewNumbered;
+  sinks.previewScale = int(output.previewScale);
+  sinks.recordSyncEveryFrames = std::uint32_t(output.recordSyncEvery);
+  if (processing.clustering) {
+    sinks.clusterRadiusRad = clusterRadiusRad(
+        {processing.clusterBudget, processing.clusterCorrectionFactor, MapLayout::Hemisphere});
+  }
+  return sinks;
+}
+
+RecordingContext recordingContext(const SourceDescription& source) {
+  RecordingContext context;
+  context.cameraModel = source.cameraModel;
+  context.cameraSerial = source.cameraSerial;
+  context.pixelFormat = source.pixelFormat;
+  context.widthPx = source.sensorWidthPx;
+  context.heightPx = source.sensorHeightPx;
+  context.nominalRateHz = source.nominalRateHz;
+  context.calibrationToml = source.calibrationToml;
+  return context;
+}
+
+std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config) {
+  Daemon daemon;
+  auto source = makeSource(config.source);
+  if (!source) return std::unexpected(source.error());
+  daemon.source = std::move(*source);
+  const SourceDescription description = daemon.source->describe();
+
+  auto pipeline = Pipeline::create(description.calibrationToml,
+                                   description.spec + " (its calibration)", config.processing);
+  if (!pipeline) return std::unexpected(pipeline.error());
+  if (auto mismatch = cameraMismatch(description, pipeline->calibration().camera)) {
+    return std::unexpected(*mismatch);
+  }
+  daemon.pipeline.emplace(std::move(*pipeline));
+
+  auto sinks =
+      makeSinks(sinkConfig(config.output, config.processing), recordingContext(description));
+  if (!sinks) return std::unexpected(sinks.error());
+  daemon.sinks = SinkSet(std::move(*sinks));
+  daemon.loop = loopOptions(config);
+  return daemon;
+}
+
+}  // namespace vem::vemd

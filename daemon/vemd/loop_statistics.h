@@ -1,0 +1,91 @@
+// LoopStatistics: what vemd measures while it runs, and the report lines it prints every few
+// seconds and at exit: frames in (delivered by the source), processed, dropped by the queue, bad
+// (refused before processing), source errors; the processing rate; per-stage time; latency.
+//
+// Units and clocks: stage times in microseconds per frame (mean and max over the window);
+// latencies in milliseconds on CLOCK_MONOTONIC: end-to-end = lights out (after the sinks) minus
+// the frame's arrivalNs; capture-to-lights = lights out minus captureTsNs, only for sources whose
+// timestamps are CLOCK_MONOTONIC (live sources). Pure: the caller passes the times in.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vemd/frame_queue.h"
+#include "vemd/processed_frame.h"
+
+namespace vem::vemd {
+
+// Count, mean and maximum of a series.
+struct RunningStat {
+  std::uint64_t count = 0;
+  double sum = 0.0;
+  double max = 0.0;
+
+  void add(double value);
+  [[nodiscard]] double mean() const { return count > 0 ? sum / double(count) : 0.0; }
+};
+
+struct StageStat {
+  std::string stage;
+  RunningStat micros;
+};
+
+// One report: a window since the last report, or the whole run.
+struct LoopReport {
+  double elapsedS = 0.0;
+  std::uint64_t framesIn = 0;
+  std::uint64_t processed = 0;
+  std::uint64_t dropped = 0;
+  std::uint64_t badFrames = 0;
+  std::uint64_t sourceErrors = 0;
+  RunningStat endToEndMs;
+  RunningStat captureToLightsMs;  // empty unless the source's clock is CLOCK_MONOTONIC
+  std::vector<StageStat> stages;  // the pipeline's stages, then "sinks"
+
+  [[nodiscard]] double framesPerSecond() const {
+    return elapsedS > 0.0 ? double(processed) / elapsedS : 0.0;
+  }
+};
+
+// One line: "<label> 5.0 s: 150 in, 150 processed (30.0 frames/s), 0 dropped, 0 bad, 0 source
+// errors; latency end-to-end 3.21 ms mean, 5.10 max[; capture-to-lights ...]; stages us
+// mean/max: calibrate 901/1210, ..., sinks 12/40".
+[[nodiscard]] std::string formatReport(const LoopReport& report, const std::string& label);
+
+class LoopStatistics {
+ public:
+  explicit LoopStatistics(std::int64_t startNs);
+
+  void frameProcessed(const ProcessedFrame& frame, double sinksMicros, std::int64_t lightsOutNs,
+                      bool liveClock);
+  void frameRefused() {
+    ++window_.badFrames;
+    ++total_.badFrames;
+  }
+
+  // The window since the last call (or the start), then a new window begins at nowNs.
+  // `queue` and `sourceErrors` are the running totals; the window gets their increase.
+  [[nodiscard]] LoopReport takeWindow(std::int64_t nowNs, const QueueCounters& queue,
+                                      std::uint64_t sourceErrors);
+  // The whole run so far.
+  [[nodiscard]] LoopReport totals(std::int64_t nowNs, const QueueCounters& queue,
+                                  std::uint64_t sourceErrors) const;
+
+  [[nodiscard]] std::uint64_t processed() const { return total_.processed; }
+
+ private:
+  static void add(LoopReport& report, const ProcessedFrame& frame, double sinksMicros,
+                  std::int64_t lightsOutNs, bool liveClock);
+
+  std::int64_t startNs_;
+  std::int64_t windowStartNs_;
+  QueueCounters windowStartQueue_;
+  std::uint64_t windowStartSourceErrors_ = 0;
+  LoopReport window_;
+  LoopReport total_;
+};
+
+}  // namespace vem::vemd

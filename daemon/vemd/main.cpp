@@ -1,0 +1,62 @@
+// vemd: the capture daemon. Parses the configuration, builds source, pipeline and sinks, runs the
+// loop until the source ends, --frames is reached, or SIGINT/SIGTERM; docs/vemd.md.
+// Exit status: 0 after a clean stop, 1 when start-up failed or a sink failed, 2 for bad usage.
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include "vemd/daemon_loop.h"
+#include "vemd/daemon_setup.h"
+#include "vemd/service_observer.h"
+#include "vemd/vemd_config.h"
+
+namespace {
+
+std::atomic<bool> gStopRequested{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+extern "C" void requestStop(int) { gStopRequested.store(true); }
+
+// SIGINT and SIGTERM ask the loop to stop; a second one (SA_RESETHAND) ends the process at once.
+void installStopHandlers() {
+  struct sigaction action {};
+  action.sa_handler = requestStop;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace vem::vemd;
+  spdlog::set_default_logger(spdlog::stderr_color_mt("vemd"));
+  spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e vemd %^%l%$: %v");
+
+  auto config = parseCommandLine(std::vector<std::string>(argv, argv + argc));
+  if (!config) {
+    std::cout << config.error().out;
+    std::cerr << config.error().err;
+    return config.error().exitCode;
+  }
+  installStopHandlers();
+  auto daemon = buildDaemon(*config);
+  if (!daemon) {
+    spdlog::error("{}", daemon.error());
+    return 1;
+  }
+  spdlog::info("running: {} into {} x {} polar maps, {} lights, filter {}, {} sink(s)",
+               daemon->source->describe().spec, config->processing.mapWidth,
+               config->processing.mapHeight, config->processing.lightCount,
+               vem::presetName(config->processing.filter), daemon->sinks.size());
+  ServiceObserver observer(ServiceNotifier::fromEnvironment());
+  const LoopResult result = runDaemonLoop(*daemon->source, *daemon->pipeline, daemon->sinks,
+                                          daemon->loop, gStopRequested, &observer);
+  return result.sinkFailures > 0 ? 1 : 0;
+}

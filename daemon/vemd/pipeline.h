@@ -1,0 +1,102 @@
+// Pipeline: what vemd does to each frame, as one value-in, value-out chain (docs/architecture.md,
+// "Data flow of one frame"):
+//
+//   RawFrame --calibrate (code table, polar remap)--> EnvMap (polar, cd/m^2)
+//            --tables--> SamplingTables --lights (pattern prefix)--> LightSet
+//            --filter (TemporalFilter::push(seq))--> LightSet --cluster (optional)--> Clustering
+//
+// - Built once per calibration: the camera file's text is parsed here, the polar remap is built
+//   once; the code-to-luminance table is rebuilt only when a frame's exposure or gain differ from
+//   the previous frame's (bit for bit). The sampling tables' storage is recycled frame to frame.
+// - State over time: only the temporal filter's rings, keyed by the frames' seq (gaps and
+//   duplicates are handled there, temporal_filter.h).
+// - Deterministic: the same frames in the same order give bit-identical lights.
+// - Pure apart from reading the clock for the per-stage timings: no threads, files or logging.
+//
+// Units: map in cd/m^2 per channel (a calibrated camera), light rgb in cd/m^2 sr; timings in
+// microseconds per stage ("calibrate", "tables", "lights", "filter", "cluster").
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <expected>
+#include <optional>
+#include <string>
+
+#include "calib/core/camera_calibration.h"
+#include "calib/core/photometric_model.h"
+#include "calib/core/polar_remap.h"
+#include "core/fir_design.h"
+#include "core/light_clustering.h"
+#include "core/light_generator.h"
+#include "core/sampling_tables.h"
+#include "core/temporal_filter.h"
+#include "vemd/captured_frame.h"
+#include "vemd/processed_frame.h"
+
+namespace vem::vemd {
+
+struct ProcessingOptions {
+  int mapWidth = 1024;  // polar (hemisphere) map columns, over the azimuth
+  int mapHeight = 256;  // rows, zenith to horizon
+  std::size_t lightCount = 1024;
+  SamplerKind sampler = SamplerKind::Havran;
+  FilterPreset filter = FilterPreset::Paper9;
+  bool clustering = true;
+  int clusterBudget = 72;  // Q: about Q clusters over the hemisphere
+  double clusterCorrectionFactor = kDefaultClusterCorrectionFactor;
+
+  friend bool operator==(const ProcessingOptions&, const ProcessingOptions&) = default;
+};
+
+// Stage names in the order they run, as ProcessedFrame::timings lists them.
+inline constexpr const char* kStageNames[] = {"calibrate", "tables", "lights", "filter", "cluster"};
+
+class Pipeline {
+ public:
+  // Parses the camera file (`sourceName` names it in messages) and builds the remap. Fails with
+  // one sentence when the file does not load, lacks its photometric or geometric section, or
+  // the options are out of range.
+  [[nodiscard]] static std::expected<Pipeline, std::string> create(
+      const std::string& calibrationToml, const std::string& sourceName,
+      const ProcessingOptions& options);
+
+  // Why `frame` cannot be processed (another size or pixel format than the camera's, or codes
+  // above the format's largest), or nullopt when it can. process() requires nullopt.
+  [[nodiscard]] std::optional<std::string> frameProblem(const calib::RawFrame& frame) const;
+
+  // Runs every stage on `frame`. The result, and the map it points to, stay valid until the next
+  // call; `captured` must outlive the use of the result (it is borrowed).
+  [[nodiscard]] const ProcessedFrame& process(const CapturedFrame& captured);
+
+  [[nodiscard]] const calib::CameraCalibration& calibration() const { return calibration_; }
+  [[nodiscard]] const ProcessingOptions& options() const { return options_; }
+  [[nodiscard]] double filterDelayFrames() const { return filter_.delayFrames(); }
+  [[nodiscard]] double validMapFraction() const { return remap_.validFraction(); }
+  [[nodiscard]] std::uint64_t lutRebuilds() const { return lutRebuilds_; }
+
+ private:
+  Pipeline(calib::CameraCalibration calibration, const ProcessingOptions& options);
+
+  void calibrate(const calib::RawFrame& frame);
+  void sample();
+  void filter(std::uint64_t seq);
+  void cluster();
+
+  calib::CameraCalibration calibration_;
+  ProcessingOptions options_;
+  calib::PolarRemap remap_;
+  calib::CodeToLuminanceLut lut_;
+  bool lutValid_ = false;
+  std::uint64_t lutRebuilds_ = 0;
+  EnvMap polar_;
+  SamplingTables tables_;
+  TemporalFilter filter_;
+  ClusteringParams clusteringParams_;
+  ProcessedFrame result_;
+};
+
+// One sentence naming the first option out of range, or nullopt.
+[[nodiscard]] std::optional<std::string> processingOptionsProblem(const ProcessingOptions& options);
+
+}  // namespace vem::vemd

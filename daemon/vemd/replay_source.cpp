@@ -1,0 +1,127 @@
+#include "vemd/replay_source.h"
+
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace vem::vemd {
+
+namespace {
+constexpr std::int64_t kFallbackPeriodNs = 33'333'333;  // 30 frames/s when nothing says better
+constexpr std::size_t kMaxSpareBuffers = 8;
+}  // namespace
+
+std::expected<std::unique_ptr<ReplaySource>, SourceError> ReplaySource::open(
+    const std::filesystem::path& path, const ReplayOptions& options) {
+  auto reader = recording::RecordingReader::open(path);
+  if (!reader)
+    return std::unexpected(SourceError{SourceErrorCause::NoDevice, reader.error().message});
+  return std::unique_ptr<ReplaySource>(new ReplaySource(std::move(*reader), options));
+}
+
+ReplaySource::ReplaySource(recording::RecordingReader reader, const ReplayOptions& options)
+    : reader_(std::move(reader)), options_(options), schedule_(schedulePeriodNs(options.rate)) {}
+
+SourceDescription ReplaySource::describe() const {
+  const recording::RecordingHeader& h = reader_.header();
+  SourceDescription d;
+  d.spec = "replay:" + reader_.path().string();
+  d.cameraModel = h.cameraModel;
+  d.cameraSerial = h.cameraSerial;
+  d.sensorWidthPx = h.sensorWidthPx;
+  d.sensorHeightPx = h.sensorHeightPx;
+  d.pixelFormat = h.pixelFormat;
+  d.calibrationToml = h.calibrationToml;
+  d.nominalRateHz =
+      options_.rate.mode == SourceRate::Mode::Fixed ? options_.rate.hz : h.nominalRateHz;
+  d.liveClock = false;
+  d.paced = options_.rate.mode != SourceRate::Mode::Max;
+  return d;
+}
+
+std::expected<CapturedFrame, SourceError> ReplaySource::next() {
+  if (!frameWaiting_) {
+    if (auto read = readNext(); !read) return std::unexpected(read.error());
+    frameWaiting_ = true;
+    waitingDueNs_ = schedule_.dueNs(recorded_.captureTsNs + tsShiftNs_, monotonicNowNs());
+  }
+  if (!pacer_.sleepUntil(waitingDueNs_)) {
+    return std::unexpected(SourceError{
+        SourceErrorCause::Timeout,
+        fmt::format("{}: interrupted while waiting for the next frame", reader_.path().string())});
+  }
+  frameWaiting_ = false;
+  CapturedFrame out;
+  out.frame = std::move(recorded_.frame);
+  out.seq = recorded_.seq + seqShift_;
+  out.captureTsNs = recorded_.captureTsNs + tsShiftNs_;
+  out.arrivalNs = monotonicNowNs();
+  return out;
+}
+
+void ReplaySource::recycle(CapturedFrame&& spent) {
+  if (spareCodes_.size() < kMaxSpareBuffers && spent.frame.codes.capacity() > 0) {
+    spareCodes_.push_back(std::move(spent.frame.codes));
+  }
+}
+
+void ReplaySource::interrupt() { pacer_.interrupt(); }
+
+std::uint64_t ReplaySource::damagedRecords() const {
+  return damagedBeforeLap_ + reader_.damage().damagedRecords;
+}
+
+std::expected<bool, SourceError> ReplaySource::readNext() {
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    if (recorded_.frame.codes.capacity() == 0 && !spareCodes_.empty()) {
+      recorded_.frame.codes = std::move(spareCodes_.back());
+      spareCodes_.pop_back();
+    }
+    auto got = reader_.next(recorded_);
+    if (!got) return std::unexpected(SourceError{SourceErrorCause::NoDevice, got.error().message});
+    if (*got) {
+      if (framesThisLap_ == 0) {
+        firstSeq_ = recorded_.seq;
+        firstTsNs_ = recorded_.captureTsNs;
+      }
+      lastSeq_ = recorded_.seq;
+      lastTsNs_ = recorded_.captureTsNs;
+      ++framesThisLap_;
+      return true;
+    }
+    const std::string path = reader_.path().string();
+    if (framesThisLap_ == 0) {
+      return std::unexpected(
+          SourceError{SourceErrorCause::EndOfStream,
+                      fmt::format("{}: the recording holds no intact frame", path)});
+    }
+    if (!options_.loop) {
+      return std::unexpected(
+          SourceError{SourceErrorCause::EndOfStream,
+                      fmt::format("{}: end of the recording ({} frames)", path, framesThisLap_)});
+    }
+    startNextLap();
+  }
+  return std::unexpected(SourceError{SourceErrorCause::EndOfStream, "unreachable"});
+}
+
+void ReplaySource::startNextLap() {
+  seqShift_ += lastSeq_ - firstSeq_ + 1;
+  tsShiftNs_ += lastTsNs_ - firstTsNs_ + lapPeriodNs();
+  damagedBeforeLap_ += reader_.damage().damagedRecords;
+  reader_.rewind();
+  framesThisLap_ = 0;
+  ++laps_;
+}
+
+std::int64_t ReplaySource::lapPeriodNs() const {
+  const double rateHz = reader_.header().nominalRateHz;
+  if (rateHz > 0.0) return std::llround(1e9 / rateHz);
+  if (framesThisLap_ > 1 && lastTsNs_ > firstTsNs_) {
+    return (lastTsNs_ - firstTsNs_) / std::int64_t(framesThisLap_ - 1);
+  }
+  return kFallbackPeriodNs;
+}
+
+}  // namespace vem::vemd

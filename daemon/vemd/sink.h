@@ -1,0 +1,31 @@
+// Sink: where vemd's processed frames go (a JSON-lines light file, the recorder, the preview
+// image, later the network). Sinks run on the processing thread, one after the other, in the
+// order configured; a slow sink slows processing (the capture queue then drops the oldest frames,
+// counted) but never the capture thread.
+//
+// A sink that fails (disk full, a closed pipe) reports it as a value and goes quiet: vemd logs the
+// error once, keeps running and keeps feeding the other sinks.
+#pragma once
+
+#include <expected>
+#include <string>
+
+#include "vemd/processed_frame.h"
+
+namespace vem::vemd {
+
+struct SinkFailure {
+  std::string message;  // one sentence naming the sink, the file and the cause
+};
+
+class Sink {
+ public:
+  virtual ~Sink() = default;
+  [[nodiscard]] virtual std::string name() const = 0;
+  // Called once per processed frame, in order.
+  [[nodiscard]] virtual std::expected<void, SinkFailure> consume(const ProcessedFrame& frame) = 0;
+  // Called once at shutdown: flush, close and index files.
+  [[nodiscard]] virtual std::expected<void, SinkFailure> close() = 0;
+};
+
+}  // namespace vem::vemd

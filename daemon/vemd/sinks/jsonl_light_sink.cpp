@@ -1,0 +1,99 @@
+#include "vemd/sinks/jsonl_light_sink.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+#include "tools/vemtool/light_json.h"
+#include "vemd/sinks/published_lights.h"
+
+namespace vem::vemd {
+namespace {
+
+// Writes all of `text`; the bytes written before an error in `written`, errno as the result.
+int writeAll(int fd, const std::string& text, std::size_t& written) {
+  written = 0;
+  while (written < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errno;
+    if (n == 0) return EIO;
+    written += std::size_t(n);
+  }
+  return 0;
+}
+
+}  // namespace
+
+nlohmann::ordered_json lightsLineJson(const ProcessedFrame& frame, std::uint64_t line,
+                                      std::optional<double> radiusRad) {
+  const PublishedLights published = publishedLights(frame);
+  const nlohmann::ordered_json lights =
+      published.clustering
+          ? tool::clusteredFrameJson(*published.lights, *published.clustering, radiusRad, line)
+          : tool::frameJson(*published.lights, line);
+  nlohmann::ordered_json out;
+  out["frame"] = line;
+  out["seq"] = frame.captured->seq;
+  out["capture_ts_ns"] = frame.captured->captureTsNs;
+  out["filtered"] = published.filtered;
+  if (published.filtered) out["filtered_seq"] = published.lightsSeq;
+  for (const auto& [key, value] : lights.items()) {
+    if (key != "frame") out[key] = value;
+  }
+  return out;
+}
+
+std::expected<JsonlLightSink, SinkFailure> JsonlLightSink::open(
+    const std::filesystem::path& path, std::optional<double> clusterRadiusRad) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    return std::unexpected(SinkFailure{"jsonl: cannot open " + path.string() + " for appending (" +
+                                       std::strerror(errno) + ")"});
+  }
+  return JsonlLightSink(path, recording::FileDescriptor(fd), clusterRadiusRad);
+}
+
+JsonlLightSink::JsonlLightSink(std::filesystem::path path, recording::FileDescriptor fd,
+                               std::optional<double> clusterRadiusRad)
+    : path_(std::move(path)), fd_(std::move(fd)), clusterRadiusRad_(clusterRadiusRad) {}
+
+std::expected<void, SinkFailure> JsonlLightSink::consume(const ProcessedFrame& frame) {
+  if (failed_ || frame.captured == nullptr) return {};
+  const std::string text = lightsLineJson(frame, lines_, clusterRadiusRad_).dump() + '\n';
+  std::size_t written = 0;
+  if (const int error = writeAll(fd_.get(), text, written); error != 0) {
+    // Cut the partial line off again (regular files only; best effort) so the file stays lines.
+    struct stat st {};
+    if (written > 0 && ::fstat(fd_.get(), &st) == 0 && S_ISREG(st.st_mode)) {
+      (void)::ftruncate(fd_.get(), st.st_size - off_t(written));
+    }
+    return std::unexpected(fail("cannot write line " + std::to_string(lines_), error));
+  }
+  ++lines_;
+  return {};
+}
+
+std::expected<void, SinkFailure> JsonlLightSink::close() {
+  if (failed_ || !fd_.valid()) return {};
+  if (!fd_.close()) {
+    failed_ = true;
+    return std::unexpected(SinkFailure{"jsonl: " + path_.string() + ": cannot close the file (" +
+                                       std::strerror(errno) + ")"});
+  }
+  return {};
+}
+
+SinkFailure JsonlLightSink::fail(const std::string& what, int error) {
+  failed_ = true;
+  (void)fd_.close();
+  return SinkFailure{"jsonl: " + path_.string() + ": " + what + " (" + std::strerror(error) +
+                     "); the " + std::to_string(lines_) +
+                     " lines before it stay readable and no more are written"};
+}
+
+}  // namespace vem::vemd

@@ -1,0 +1,55 @@
+#include "vemd/sinks/sink_factory.h"
+
+#include <chrono>
+#include <utility>
+
+#include "vemd/sinks/jsonl_light_sink.h"
+#include "vemd/sinks/preview_sink.h"
+#include "vemd/sinks/recorder_sink.h"
+
+namespace vem::vemd {
+namespace {
+
+template <typename S>
+std::expected<void, std::string> add(std::vector<std::unique_ptr<Sink>>& sinks,
+                                     std::expected<S, SinkFailure> sink) {
+  if (!sink) return std::unexpected(std::move(sink.error().message));
+  sinks.push_back(std::make_unique<S>(std::move(*sink)));
+  return {};
+}
+
+std::int64_t unixNowNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+}  // namespace
+
+std::expected<std::vector<std::unique_ptr<Sink>>, std::string> makeSinks(
+    const SinkConfig& config, const RecordingContext& recordingContext) {
+  std::vector<std::unique_ptr<Sink>> sinks;
+  if (config.jsonl) {
+    auto added = add(sinks, JsonlLightSink::open(*config.jsonl, config.clusterRadiusRad));
+    if (!added) return std::unexpected(std::move(added.error()));
+  }
+  if (config.record) {
+    recording::WriterOptions options;
+    options.syncEveryFrames = config.recordSyncEveryFrames;
+    auto added = add(sinks, RecorderSink::create(recordingPathFor(*config.record, unixNowNs()),
+                                                 recordingContext, options));
+    if (!added) return std::unexpected(std::move(added.error()));
+  }
+  if (config.previewDir) {
+    PreviewOptions options;
+    options.every = config.previewEvery;
+    options.numbered = config.previewNumbered;
+    options.style.scale = config.previewScale;
+    options.style.clusterRadiusRad = config.clusterRadiusRad;
+    auto added = add(sinks, PreviewSink::create(*config.previewDir, options));
+    if (!added) return std::unexpected(std::move(added.error()));
+  }
+  return sinks;
+}
+
+}  // namespace vem::vemd

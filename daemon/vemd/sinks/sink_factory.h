@@ -1,0 +1,41 @@
+// makeSinks: the sinks a vemd configuration asks for, in a fixed order: the JSON-lines light file,
+// the recorder, the preview image (sink.h: they run in this order on the processing thread).
+//
+// Every file is opened, or the recording created, here, so a bad path fails at start-up with one
+// sentence rather than at the first frame. `record` may name a folder: each run then records into
+// a new time-stamped file in it (recorder_sink.h, recordingPathFor); a file path must not exist
+// yet.
+#pragma once
+
+#include <cstdint>
+#include <expected>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vemd/sink.h"
+#include "vemd/sinks/recording_context.h"
+
+namespace vem::vemd {
+
+struct SinkConfig {
+  std::optional<std::filesystem::path> jsonl;       // JSON-lines light file (appended)
+  std::optional<std::filesystem::path> record;      // a .vem file, or a folder for new ones
+  std::optional<std::filesystem::path> previewDir;  // preview.png goes here
+  int previewEvery = 30;                            // one preview per this many frames
+  bool previewNumbered = false;                     // also keep preview-SEQ.png files
+  int previewScale = 2;                             // preview pixels per polar-map pixel
+  // The clustering radius e (core/light_clustering.h clusterRadiusRad) when vemd clusters: the
+  // JSON lines' "radius_rad" and the preview's rings. Unset: no "radius_rad", rings of fixed size.
+  std::optional<double> clusterRadiusRad;
+  std::uint32_t recordSyncEveryFrames = 30;  // recording::WriterOptions::syncEveryFrames
+};
+
+// The configured sinks (none when nothing is configured), or the first failure as one sentence
+// naming the sink, the path and the cause.
+[[nodiscard]] std::expected<std::vector<std::unique_ptr<Sink>>, std::string> makeSinks(
+    const SinkConfig& config, const RecordingContext& recordingContext);
+
+}  // namespace vem::vemd

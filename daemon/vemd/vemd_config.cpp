@@ -1,0 +1,315 @@
+#include "vemd/vemd_config.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+#include <CLI/CLI.hpp>
+
+#include "core/default_pattern.h"
+#include "vemd/toml_section_reader.h"
+
+namespace vem::vemd {
+
+namespace {
+
+// Ranges shared by the file and the flags.
+constexpr std::int64_t kMaxFrames = std::numeric_limits<std::int64_t>::max();
+constexpr std::int64_t kMaxQueueDepth = 1024;
+constexpr double kMaxNoiseCode = 4096.0;
+constexpr std::int64_t kMinMapSide = 4;
+constexpr std::int64_t kMaxMapSide = 16384;
+constexpr std::int64_t kMaxClusterBudget = std::int64_t(kMaxLights);
+constexpr double kMinCorrectionFactor = 0.1;
+constexpr double kMaxCorrectionFactor = 10.0;
+constexpr std::int64_t kMaxEvery = 1'000'000;
+constexpr std::int64_t kMaxPreviewScale = 16;
+constexpr double kMaxStatsEveryS = 86400.0;
+constexpr const char* kRateExpected =
+    "\"recorded\", \"max\" or a number of frames per second above 0 and at most 10000";
+
+// The keys of each section, in the order config/vemd.toml documents them.
+constexpr std::string_view kTopKeys[] = {"version",    "source", "processing", "filter",
+                                         "clustering", "output", "stats"};
+constexpr std::string_view kSourceKeys[] = {
+    "spec",         "rate",   "loop",       "frames", "queue_depth", "retry_initial_ms",
+    "retry_max_ms", "camera", "noise_code", "seed"};
+constexpr std::string_view kProcessingKeys[] = {"map_width", "map_height", "lights", "sampler"};
+constexpr std::string_view kFilterKeys[] = {"preset"};
+constexpr std::string_view kClusteringKeys[] = {"enabled", "budget", "correction_factor"};
+constexpr std::string_view kOutputKeys[] = {
+    "dir",          "jsonl", "record", "record_sync_every", "preview_every", "preview_numbered",
+    "preview_scale"};
+constexpr std::string_view kStatsKeys[] = {"every_s"};
+
+const std::vector<std::string_view> kSamplerNames{"havran", "standard"};
+constexpr SamplerKind kSamplers[] = {SamplerKind::Havran, SamplerKind::Standard};
+
+std::vector<std::string_view> presetNames() {
+  std::vector<std::string_view> names;
+  for (FilterPreset p : kAllPresets) names.emplace_back(presetName(p));
+  return names;
+}
+
+void readSource(TomlSectionReader r, SourceConfig& s) {
+  r.onlyKeys(kSourceKeys);
+  r.text("spec", s.spec);
+  r.parsed("rate", kRateExpected, parseSourceRate, s.rate);
+  r.boolean("loop", s.loop);
+  r.wholeNumber("frames", 0, kMaxFrames, s.frames);
+  r.wholeNumber("queue_depth", 1, kMaxQueueDepth, s.queueDepth);
+  r.wholeNumber("retry_initial_ms", 1, 60'000, s.retryInitialMs);
+  r.wholeNumber("retry_max_ms", 1, 600'000, s.retryMaxMs);
+  r.text("camera", s.camera);
+  r.number("noise_code", 0.0, kMaxNoiseCode, s.noiseCode);
+  r.wholeNumber("seed", 0, kMaxFrames, s.seed);
+  if (s.retryMaxMs < s.retryInitialMs) {
+    r.fail("retry_max_ms", fmt::format("at least source.retry_initial_ms ({})", s.retryInitialMs),
+           std::to_string(s.retryMaxMs));
+  }
+}
+
+void readProcessing(TomlSectionReader r, ProcessingOptions& p) {
+  r.onlyKeys(kProcessingKeys);
+  r.wholeNumber("map_width", kMinMapSide, kMaxMapSide, p.mapWidth);
+  r.wholeNumber("map_height", kMinMapSide, kMaxMapSide, p.mapHeight);
+  r.wholeNumber("lights", 1, std::int64_t(kMaxLights), p.lightCount);
+  std::size_t sampler = p.sampler == SamplerKind::Havran ? 0 : 1;
+  r.choice("sampler", kSamplerNames, sampler);
+  p.sampler = kSamplers[sampler];
+}
+
+void readFilter(TomlSectionReader r, ProcessingOptions& p) {
+  r.onlyKeys(kFilterKeys);
+  std::size_t preset = 0;
+  while (kAllPresets[preset] != p.filter) ++preset;
+  r.choice("preset", presetNames(), preset);
+  p.filter = kAllPresets[preset];
+}
+
+void readClustering(TomlSectionReader r, ProcessingOptions& p) {
+  r.onlyKeys(kClusteringKeys);
+  r.boolean("enabled", p.clustering);
+  r.wholeNumber("budget", 1, kMaxClusterBudget, p.clusterBudget);
+  r.number("correction_factor", kMinCorrectionFactor, kMaxCorrectionFactor,
+           p.clusterCorrectionFactor);
+}
+
+void readOutput(TomlSectionReader r, OutputConfig& o) {
+  r.onlyKeys(kOutputKeys);
+  r.text("dir", o.dir);
+  r.text("jsonl", o.jsonl);
+  r.text("record", o.record);
+  r.wholeNumber("record_sync_every", 0, kMaxEvery, o.recordSyncEvery);
+  r.wholeNumber("preview_every", 0, kMaxEvery, o.previewEvery);
+  r.boolean("preview_numbered", o.previewNumbered);
+  r.wholeNumber("preview_scale", 1, kMaxPreviewScale, o.previewScale);
+}
+
+void readStats(TomlSectionReader r, StatsConfig& s) {
+  r.onlyKeys(kStatsKeys);
+  r.number("every_s", 0.0, kMaxStatsEveryS, s.everyS);
+}
+
+// The section `name` of the document, or an empty table when it is absent; a failure when it is
+// not a table.
+const toml::table& section(const toml::table& document, std::string_view name,
+                           TomlSectionReader& top) {
+  static const toml::table empty;
+  const toml::node* node = document.get(name);
+  if (node == nullptr) return empty;
+  if (!node->is_table()) {
+    top.fail(name, fmt::format("a table ([{}])", name), describeTomlNode(*node));
+    return empty;
+  }
+  return *node->as_table();
+}
+
+// ---- command line ----
+
+std::string wholeNumberProblem(const std::string& text, std::int64_t min, std::int64_t max) {
+  std::int64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc() && end == text.data() + text.size() && value >= min && value <= max) {
+    return {};
+  }
+  return fmt::format("expected a whole number from {} to {}, found {}", min, max, text);
+}
+
+CLI::Validator wholeNumberCheck(std::int64_t min, std::int64_t max) {
+  return CLI::Validator(
+      [min, max](std::string& text) { return wholeNumberProblem(text, min, max); },
+      fmt::format("INT in {}..{}", min, max));
+}
+
+CLI::Validator numberCheck(double min, double max) {
+  return CLI::Validator(
+      [min, max](std::string& text) -> std::string {
+        double value = 0.0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (ec == std::errc() && end == text.data() + text.size() && std::isfinite(value) &&
+            value >= min && value <= max) {
+          return {};
+        }
+        return fmt::format("expected a number from {} to {}, found {}", min, max, text);
+      },
+      fmt::format("NUMBER in {}..{}", min, max));
+}
+
+CLI::Validator rateCheck() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (parseSourceRate(text)) return {};
+        return fmt::format("expected {}, found {}", kRateExpected, text);
+      },
+      "recorded|max|HZ");
+}
+
+struct Flags {
+  std::optional<std::string> config, source, rate, out, record, jsonl;
+  std::optional<std::uint64_t> frames;
+  std::optional<std::size_t> lights;
+  std::optional<int> cluster;
+  std::optional<std::int64_t> previewEvery;
+  std::optional<double> statsEvery;
+  bool loop = false;
+};
+
+void addFlags(CLI::App& app, Flags& f) {
+  app.add_option("--config", f.config, "Configuration file (TOML; see config/vemd.toml)");
+  app.add_option("--source", f.source, "replay:FILE.vem | synthetic:SCENE");
+  app.add_option("--frames", f.frames, "Stop after N frames from the source (0: no limit)")
+      ->check(wholeNumberCheck(0, kMaxFrames));
+  app.add_option("--rate", f.rate, "recorded | max | HZ: the pace of the source")
+      ->check(rateCheck());
+  app.add_flag("--loop", f.loop, "Replay the recording again and again");
+  app.add_option("--lights", f.lights, "Lights per frame")
+      ->check(wholeNumberCheck(1, std::int64_t(kMaxLights)));
+  app.add_option("--cluster", f.cluster, "Cluster toward about Q lights (0: no clustering)")
+      ->check(wholeNumberCheck(0, kMaxClusterBudget));
+  app.add_option("--out", f.out, "Folder for the preview and relative --jsonl/--record paths");
+  app.add_option("--record", f.record, "Record frames and lights into a .vem file or folder");
+  app.add_option("--jsonl", f.jsonl, "Append each frame's lights to a JSON-lines file");
+  app.add_option("--preview-every", f.previewEvery, "Write preview.png every N frames (0: off)")
+      ->check(wholeNumberCheck(0, kMaxEvery));
+  app.add_option("--stats-every", f.statsEvery, "Report every S seconds (0: only at exit)")
+      ->check(numberCheck(0.0, kMaxStatsEveryS));
+}
+
+void applyFlags(const Flags& f, VemdConfig& c) {
+  if (f.source) c.source.spec = *f.source;
+  if (f.frames) c.source.frames = *f.frames;
+  if (f.rate) c.source.rate = *parseSourceRate(*f.rate);
+  if (f.loop) c.source.loop = true;
+  if (f.lights) c.processing.lightCount = *f.lights;
+  if (f.cluster) {
+    c.processing.clustering = *f.cluster > 0;
+    if (*f.cluster > 0) c.processing.clusterBudget = *f.cluster;
+  }
+  if (f.out) c.output.dir = *f.out;
+  if (f.record) c.output.record = *f.record;
+  if (f.jsonl) c.output.jsonl = *f.jsonl;
+  if (f.previewEvery) c.output.previewEvery = *f.previewEvery;
+  if (f.statsEvery) c.stats.everyS = *f.statsEvery;
+}
+
+constexpr const char* kFooter =
+    "Examples:\n"
+    "  vemd --source replay:sky.vem --rate max --frames 300\n"
+    "  vemd --config /etc/vemcast/vemd.toml\n"
+    "  vemd --source synthetic:clear-sky --jsonl lights.jsonl --record runs/\n"
+    "Flags override the configuration file; config/vemd.toml documents every key.\n"
+    "SIGINT and SIGTERM stop vemd cleanly (sinks closed, a recording indexed).";
+
+}  // namespace
+
+const std::vector<ConfigSection>& configSchema() {
+  static const std::vector<ConfigSection> schema = [] {
+    const auto list = [](std::span<const std::string_view> keys) {
+      return std::vector<std::string>(keys.begin(), keys.end());
+    };
+    return std::vector<ConfigSection>{{"", {"version"}},
+                                      {"source", list(kSourceKeys)},
+                                      {"processing", list(kProcessingKeys)},
+                                      {"filter", list(kFilterKeys)},
+                                      {"clustering", list(kClusteringKeys)},
+                                      {"output", list(kOutputKeys)},
+                                      {"stats", list(kStatsKeys)}};
+  }();
+  return schema;
+}
+
+std::expected<VemdConfig, std::string> parseConfig(const std::string& text,
+                                                   const std::string& sourceName) {
+  toml::table document;
+  try {
+    document = toml::parse(text, sourceName);
+  } catch (const toml::parse_error& e) {
+    const auto& begin = e.source().begin;
+    return std::unexpected(fmt::format("{}: line {}, column {}: not valid TOML ({})", sourceName,
+                                       begin.line, begin.column, e.description()));
+  }
+  ConfigStatus status{sourceName, std::nullopt};
+  VemdConfig config;
+  TomlSectionReader top(document, "", status);
+  top.onlyKeys(kTopKeys);
+  std::int64_t version = 1;
+  top.wholeNumber("version", 1, 1, version);
+  readSource({section(document, "source", top), "source", status}, config.source);
+  readProcessing({section(document, "processing", top), "processing", status}, config.processing);
+  readFilter({section(document, "filter", top), "filter", status}, config.processing);
+  readClustering({section(document, "clustering", top), "clustering", status}, config.processing);
+  readOutput({section(document, "output", top), "output", status}, config.output);
+  readStats({section(document, "stats", top), "stats", status}, config.stats);
+  if (!status.ok()) return std::unexpected(*status.failure);
+  return config;
+}
+
+std::expected<VemdConfig, std::string> loadConfigFile(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) {
+    return std::unexpected(fmt::format("{}: no such file", path.string()));
+  }
+  if (std::filesystem::is_directory(path, error)) {
+    return std::unexpected(fmt::format("{}: a folder, not a configuration file", path.string()));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) {
+    return std::unexpected(fmt::format("{}: cannot read the file", path.string()));
+  }
+  return parseConfig(text.str(), path.string());
+}
+
+std::expected<VemdConfig, CommandLineExit> parseCommandLine(const std::vector<std::string>& args) {
+  CLI::App app{"vemd: turns an HDR fisheye camera's frames into directional lights"};
+  app.footer(kFooter);
+  app.set_version_flag("--version", "vemd " VEM_VERSION);
+  Flags flags;
+  addFlags(app, flags);
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  try {
+    app.parse(int(argv.size()), argv.data());
+  } catch (const CLI::ParseError& e) {
+    std::ostringstream out, err;
+    const int code = app.exit(e, out, err);
+    return std::unexpected(CommandLineExit{code, out.str(), err.str()});
+  }
+  VemdConfig config;
+  if (flags.config) {
+    auto loaded = loadConfigFile(*flags.config);
+    if (!loaded) return std::unexpected(CommandLineExit{2, "", loaded.error() + "\n"});
+    config = std::move(*loaded);
+  }
+  applyFlags(flags, config);
+  return config;
+}
+
+}  // namespace vem::vemd

@@ -1,0 +1,235 @@
+// The built `vemd` as a user runs it: a small recording replayed with --frames, the final report,
+// a clean stop on SIGTERM that leaves an indexed recording, and bad usage.
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "recording/recording_reader.h"
+#include "vemd_fixtures.h"
+
+namespace vem::testing {
+namespace {
+
+struct DaemonRun {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class VemdCli : public VemdFiles {
+ protected:
+  void SetUp() override {
+    VemdFiles::SetUp();
+    std::ofstream(smallConfig()) << "[processing]\nmap_width = 256\nmap_height = 64\n";
+  }
+  // Small maps keep the runs fast; flags come after it and override.
+  fs::path smallConfig() const { return dir_ / "small.toml"; }
+  std::string vemd() const {
+    return std::string(VEMD_PATH) + " --config " + smallConfig().string();
+  }
+
+  // `args` after --config small.toml, or alone when `withSmallConfig` is false.
+  DaemonRun run(const std::string& args, bool withSmallConfig = true) const {
+    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+    const std::string program = withSmallConfig ? vemd() : std::string(VEMD_PATH);
+    const std::string command = program + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    return {WEXITSTATUS(status), slurp(out), slurp(err)};
+  }
+};
+
+TEST_F(VemdCli, ReplaysNFramesAndPrintsTheFinalReport) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 6, false);
+  const DaemonRun r = run("--source replay:" + path.string() +
+                          " --rate max --frames 4 --lights 64 --stats-every 0");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("final "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": 4 in, 4 processed ("), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("0 dropped"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stages us mean/max: calibrate "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stopping: the frame limit was reached"), std::string::npos) << r.err;
+}
+
+TEST_F(VemdCli, WritesTheLightsOfEveryFrameToTheJsonlFile) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 5, false);
+  const DaemonRun r = run("--source replay:" + path.string() + " --rate max --lights 16 --out " +
+                          dir_.string() + " --jsonl lights.jsonl");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string lines = slurp(dir_ / "lights.jsonl");
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 5) << lines;
+}
+
+// SIGTERM stops the daemon cleanly: exit 0, and the recording it was making has its index.
+TEST_F(VemdCli, SigtermStopsCleanlyAndTheRecordingGetsItsIndex) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 4, false);
+  const fs::path recorded = dir_ / "out.vem";
+  const fs::path err = dir_ / "stderr";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string source = "replay:" + path.string();
+    const std::string record = recorded.string();
+    (void)std::freopen(err.c_str(), "w", stderr);
+    const std::string config = smallConfig().string();
+    ::execl(VEMD_PATH, VEMD_PATH, "--config", config.c_str(), "--source", source.c_str(), "--loop",
+            "--rate", "100", "--lights", "16", "--record", record.c_str(), "--stats-every", "0",
+            static_cast<char*>(nullptr));
+    std::_Exit(127);
+  }
+  // Wait until a few frames are recorded (the file grows), then ask it to stop.
+  bool recording = false;
+  for (int i = 0; i < 600 && !recording; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(recorded, error);
+    recording = !error && size > 200'000;
+  }
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(recording) << slurp(err);
+  ASSERT_TRUE(WIFEXITED(status)) << slurp(err);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << slurp(err);
+  EXPECT_NE(slurp(err).find("stopping: a stop was requested"), std::string::npos) << slurp(err);
+  auto reader = recording::RecordingReader::open(recorded);
+  ASSERT_TRUE(reader) << reader.error().message;
+  EXPECT_TRUE(reader->hasIndex());
+  EXPECT_GE(reader->index().size(), 2u);
+}
+
+// The synthetic source through a configuration file (its camera is a small one), paced at its
+// own rate: a live clock, so the report has the capture-to-lights latency.
+TEST_F(VemdCli, SyntheticSceneFromAConfigFileReportsCaptureToLightsLatency) {
+  const fs::path camera = dir_ / "cam.toml";
+  ASSERT_TRUE(calib::io::saveCameraFile(smallCamera(), camera));
+  const fs::path config = dir_ / "vemd.toml";
+  std::ofstream(config) << "[source]\nspec = \"synthetic:sky\"\nrate = 200\nframes = 5\n"
+                           "camera = \""
+                        << camera.string()
+                        << "\"\n[processing]\n"
+                           "map_width = 256\nmap_height = 64\nlights = 64\n";
+  const DaemonRun r = run("--config " + config.string(), false);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("5 in, "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("capture-to-lights "), std::string::npos) << r.err;
+}
+
+// A paced replay with a report every 0.1 s: the periodic statistics lines come while it runs.
+TEST_F(VemdCli, PrintsAStatisticsLineEveryFewSecondsWhileRunning) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 12, false);
+  const DaemonRun r =
+      run("--source replay:" + path.string() + " --rate 30 --lights 16 --stats-every 0.1");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("info: stats 0."), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("info: final "), std::string::npos) << r.err;
+}
+
+// Under systemd (NOTIFY_SOCKET, WATCHDOG_USEC set), vemd says READY=1 after its first frame,
+// pings the watchdog, publishes its report lines as STATUS= and says STOPPING=1.
+TEST_F(VemdCli, TellsTheServiceManagerReadyWatchdogStatusAndStopping) {
+  const fs::path socketPath = dir_ / "notify";
+  const int fd = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_NONBLOCK, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  ASSERT_LT(socketPath.string().size(), sizeof address.sun_path);
+  std::copy_n(socketPath.c_str(), socketPath.string().size(), address.sun_path);
+  ASSERT_EQ(::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 12, false);
+  const std::string command = "NOTIFY_SOCKET=" + socketPath.string() + " WATCHDOG_USEC=100000 " +
+                              vemd() + " --source replay:" + path.string() +
+                              " --rate 60 --lights 16 --stats-every 0.05 2>" +
+                              (dir_ / "err").string();
+  // Read while vemd runs, as systemd does: a full socket queue would block vemd's sd_notify.
+  std::atomic<bool> finished{false};
+  int status = -1;
+  std::thread daemon([&] {
+    status = std::system(command.c_str());
+    finished = true;
+  });
+  std::vector<std::string> messages;
+  char buffer[4096];
+  for (;;) {
+    const bool last = finished.load();
+    for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) {
+      messages.emplace_back(buffer, std::size_t(n));
+    }
+    if (last) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  daemon.join();
+  ASSERT_EQ(status, 0) << slurp(dir_ / "err");
+  ::close(fd);
+  const auto position = [&](const std::string& prefix) {
+    for (std::size_t i = 0; i < messages.size(); ++i) {
+      if (messages[i].rfind(prefix, 0) == 0) return int(i);
+    }
+    return -1;
+  };
+  ASSERT_GE(position("READY=1"), 0);
+  EXPECT_GE(position("WATCHDOG=1"), 0);
+  EXPECT_GE(position("STATUS=stats "), 0);
+  ASSERT_GE(position("STOPPING=1"), 0);
+  EXPECT_LT(position("READY=1"), position("STOPPING=1"));
+}
+
+TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {
+  const DaemonRun r = run("--frames 1");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("no source given: expected --source"), std::string::npos) << r.err;
+}
+
+TEST_F(VemdCli, BadFlagExitsWithUsageStatus) {
+  const DaemonRun r = run("--lights 0");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("--lights: expected a whole number from 1 to 65536, found 0"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST_F(VemdCli, RecordingFromAnotherCameraIsRefusedAtStart) {
+  // A recording whose calibration is for another sensor size cannot be calibrated.
+  recording::RecordingHeader header = smallRecordingHeader();
+  calib::CameraCalibration other = cameraTruth(640, 512, 1);
+  header.calibrationToml = calib::io::formatCameraFile(other);
+  const fs::path path = dir_ / "other.vem";
+  {
+    auto writer = recording::RecordingWriter::create(path, header);
+    ASSERT_TRUE(writer);
+    ASSERT_TRUE(writer->append(0, 0, cachedSkyFrame(0)));
+    ASSERT_TRUE(writer->close());
+  }
+  const DaemonRun r = run("--source replay:" + path.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("the frames are 320 x 256 Mono12 but the calibration is for a 640 x 512 "
+                       "Mono12 camera"),
+            std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace vem::testing
