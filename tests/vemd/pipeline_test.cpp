@@ -143,8 +143,9 @@ TEST(Pipeline, TimingsNameEveryStageInOrder) {
 TEST(Pipeline, ResultCarriesTheMapLightsFilteredSetAndClustering) {
   vemd::Pipeline pipeline = smallPipeline();
   for (int i = 0; i < 6; ++i) {
-    const vemd::ProcessedFrame& p =
-        pipeline.process(captured(cachedSkyFrame(i), std::uint64_t(10 + i)));
+    // ProcessedFrame borrows the captured frame: keep it alive while p is read.
+    const vemd::CapturedFrame frame = captured(cachedSkyFrame(i), std::uint64_t(10 + i));
+    const vemd::ProcessedFrame& p = pipeline.process(frame);
     ASSERT_NE(p.polar, nullptr);
     EXPECT_EQ(p.polar->width, 256);
     EXPECT_EQ(p.polar->height, 64);
