@@ -1,6 +1,8 @@
 #include "vemd/daemon_setup.h"
 
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
@@ -30,6 +32,16 @@ std::optional<std::string> cameraMismatch(const SourceDescription& source,
                      source.spec, source.sensorWidthPx, source.sensorHeightPx,
                      calib::pixelFormatName(source.pixelFormat), camera.sensorWidthPx,
                      camera.sensorHeightPx, calib::pixelFormatName(camera.pixelFormat));
+}
+
+// Creates the output folder, so that --out DIR works on a folder that does not exist yet.
+std::optional<std::string> outputFolderProblem(const std::string& dir) {
+  if (dir.empty()) return std::nullopt;
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (!error && fs::is_directory(dir)) return std::nullopt;
+  return fmt::format("output.dir: cannot use {} as the output folder ({})", dir,
+                     error ? error.message() : "it is not a folder");
 }
 
 }  // namespace
@@ -89,6 +101,7 @@ std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config) {
   }
   daemon.pipeline.emplace(std::move(*pipeline));
 
+  if (auto problem = outputFolderProblem(config.output.dir)) return std::unexpected(*problem);
   auto sinks =
       makeSinks(sinkConfig(config.output, config.processing), recordingContext(description));
   if (!sinks) return std::unexpected(sinks.error());

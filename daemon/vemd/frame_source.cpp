@@ -14,6 +14,10 @@ const char* sourceErrorName(SourceErrorCause cause) {
   return "unknown";
 }
 
+std::expected<void, std::string> FrameSource::setExposure(double, double) {
+  return std::unexpected(describe().spec + ": this source has no exposure control");
+}
+
 std::int64_t monotonicNowNs() {
   timespec ts{};
   ::clock_gettime(CLOCK_MONOTONIC, &ts);

@@ -15,6 +15,11 @@
 //   like next().
 // - interrupt() may be called from any thread: it wakes a next() that waits (pacing, a device),
 //   which then returns Timeout. Later calls to next() wait normally again.
+// - setExposure() asks a source with exposure control (cameras, the synthetic camera) to take the
+//   frames it captures from now on with this exposure (microseconds) and gain (linear, 1 = unity).
+//   Cameras apply it a few frames late; every frame carries in RawFrame::exposureUs and ::gain
+//   what it was really taken with, so consumers (bracketing) go by the frame, not the request.
+//   Sources without exposure control (replay) refuse with a sentence. Capture thread only.
 #pragma once
 
 #include <cstdint>
@@ -56,6 +61,8 @@ class FrameSource {
   [[nodiscard]] virtual std::expected<CapturedFrame, SourceError> next() = 0;
   virtual void recycle(CapturedFrame&& spent) = 0;
   virtual void interrupt() = 0;
+  [[nodiscard]] virtual std::expected<void, std::string> setExposure(double exposureUs,
+                                                                     double gain);
 };
 
 // CLOCK_MONOTONIC now, in nanoseconds (the clock of arrivalNs and of live captureTsNs).

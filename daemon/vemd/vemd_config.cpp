@@ -143,8 +143,7 @@ std::string wholeNumberProblem(const std::string& text, std::int64_t min, std::i
 
 CLI::Validator wholeNumberCheck(std::int64_t min, std::int64_t max) {
   return CLI::Validator(
-      [min, max](std::string& text) { return wholeNumberProblem(text, min, max); },
-      fmt::format("INT in {}..{}", min, max));
+      [min, max](std::string& text) { return wholeNumberProblem(text, min, max); }, "");
 }
 
 CLI::Validator numberCheck(double min, double max) {
@@ -158,7 +157,7 @@ CLI::Validator numberCheck(double min, double max) {
         }
         return fmt::format("expected a number from {} to {}, found {}", min, max, text);
       },
-      fmt::format("NUMBER in {}..{}", min, max));
+      "");
 }
 
 CLI::Validator rateCheck() {
@@ -167,7 +166,7 @@ CLI::Validator rateCheck() {
         if (parseSourceRate(text)) return {};
         return fmt::format("expected {}, found {}", kRateExpected, text);
       },
-      "recorded|max|HZ");
+      "");
 }
 
 struct Flags {
@@ -178,26 +177,39 @@ struct Flags {
   std::optional<std::int64_t> previewEvery;
   std::optional<double> statsEvery;
   bool loop = false;
+  bool previewNumbered = false;
 };
 
 void addFlags(CLI::App& app, Flags& f) {
-  app.add_option("--config", f.config, "Configuration file (TOML; see config/vemd.toml)");
-  app.add_option("--source", f.source, "replay:FILE.vem | synthetic:SCENE");
+  app.add_option("--config", f.config, "Configuration file (TOML; see config/vemd.toml)")
+      ->type_name("FILE");
+  app.add_option("--source", f.source, "replay:FILE.vem | synthetic:SCENE")->type_name("SPEC");
   app.add_option("--frames", f.frames, "Stop after N frames from the source (0: no limit)")
+      ->type_name("N")
       ->check(wholeNumberCheck(0, kMaxFrames));
-  app.add_option("--rate", f.rate, "recorded | max | HZ: the pace of the source")
+  app.add_option("--rate", f.rate, "The pace of the source: recorded, max or frames per second")
+      ->type_name("recorded|max|HZ")
       ->check(rateCheck());
   app.add_flag("--loop", f.loop, "Replay the recording again and again");
-  app.add_option("--lights", f.lights, "Lights per frame")
+  app.add_option("--lights", f.lights, "Lights per frame, 1 to 65536")
+      ->type_name("N")
       ->check(wholeNumberCheck(1, std::int64_t(kMaxLights)));
   app.add_option("--cluster", f.cluster, "Cluster toward about Q lights (0: no clustering)")
+      ->type_name("Q")
       ->check(wholeNumberCheck(0, kMaxClusterBudget));
-  app.add_option("--out", f.out, "Folder for the preview and relative --jsonl/--record paths");
-  app.add_option("--record", f.record, "Record frames and lights into a .vem file or folder");
-  app.add_option("--jsonl", f.jsonl, "Append each frame's lights to a JSON-lines file");
+  app.add_option("--out", f.out, "Folder for the preview and relative --jsonl/--record paths")
+      ->type_name("DIR");
+  app.add_option("--record", f.record, "Record frames and lights into a new .vem (or a folder)")
+      ->type_name("FILE");
+  app.add_option("--jsonl", f.jsonl, "Append each frame's lights to a JSON-lines file")
+      ->type_name("FILE");
   app.add_option("--preview-every", f.previewEvery, "Write preview.png every N frames (0: off)")
+      ->type_name("N")
       ->check(wholeNumberCheck(0, kMaxEvery));
-  app.add_option("--stats-every", f.statsEvery, "Report every S seconds (0: only at exit)")
+  app.add_flag("--preview-numbered", f.previewNumbered,
+               "Also keep every preview as preview-SEQ.png");
+  app.add_option("--stats-every", f.statsEvery, "A statistics line every S seconds (0: at exit)")
+      ->type_name("S")
       ->check(numberCheck(0.0, kMaxStatsEveryS));
 }
 
@@ -215,6 +227,7 @@ void applyFlags(const Flags& f, VemdConfig& c) {
   if (f.record) c.output.record = *f.record;
   if (f.jsonl) c.output.jsonl = *f.jsonl;
   if (f.previewEvery) c.output.previewEvery = *f.previewEvery;
+  if (f.previewNumbered) c.output.previewNumbered = true;
   if (f.statsEvery) c.stats.everyS = *f.statsEvery;
 }
 
@@ -222,7 +235,7 @@ constexpr const char* kFooter =
     "Examples:\n"
     "  vemd --source replay:sky.vem --rate max --frames 300\n"
     "  vemd --config /etc/vemcast/vemd.toml\n"
-    "  vemd --source synthetic:clear-sky --jsonl lights.jsonl --record runs/\n"
+    "  vemd --source synthetic:sky --jsonl lights.jsonl --record runs/\n"
     "Flags override the configuration file; config/vemd.toml documents every key.\n"
     "SIGINT and SIGTERM stop vemd cleanly (sinks closed, a recording indexed).";
 
@@ -299,8 +312,8 @@ std::expected<VemdConfig, CommandLineExit> parseCommandLine(const std::vector<st
     app.parse(int(argv.size()), argv.data());
   } catch (const CLI::ParseError& e) {
     std::ostringstream out, err;
-    const int code = app.exit(e, out, err);
-    return std::unexpected(CommandLineExit{code, out.str(), err.str()});
+    const int code = app.exit(e, out, err);  // 0 for --help and --version
+    return std::unexpected(CommandLineExit{code == 0 ? 0 : 2, out.str(), err.str()});
   }
   VemdConfig config;
   if (flags.config) {

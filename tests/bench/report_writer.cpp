@@ -10,6 +10,7 @@
 #include "accuracy_study.h"
 #include "bench_fixtures.h"
 #include "svg_plot.h"
+#include "vemd_benchmarks.h"
 
 namespace vem::bench {
 namespace {
@@ -204,6 +205,7 @@ std::string writeReport(const ReportInputs& in, const std::filesystem::path& doc
   stageTable(md, in);
   calibrationTable(md, in);
   recordingTable(md, in);
+  md << vemdReportSection();
   const auto sphere = perMapErrors(in.counts, MapLayout::Sphere);
   accuracyVersusTime(md, in, sphere, docsDir);
   const std::vector<std::size_t> tableCounts{64, 256, 1024};

@@ -123,6 +123,12 @@ TEST_F(VemtoolSynthCli, SynthRecordsNFramesAtTheRateThatInfoReports) {
   EXPECT_EQ(vem::calib::io::formatCameraFile(*stored), vem::calib::io::formatCameraFile(*example));
 }
 
+TEST_F(VemtoolSynthCli, SynthCreatesTheFolderOfItsOutput) {
+  const ToolRun r = run("synth --scene sky --frames 1 --rate 30 --out " + path("runs/a/sky.vem"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "runs" / "a" / "sky.vem"));
+}
+
 TEST_F(VemtoolSynthCli, ExportedFrameIsAMapWhoseStrongestLightIsTheSun) {
   ASSERT_EQ(run("synth --scene sky --frames 3 --rate 30 --out " + path("sky.vem")).exitCode, 0);
   const ToolRun e = run("export " + path("sky.vem") + " --frame 2 --out " + path("sky-2.exr"));

@@ -81,6 +81,37 @@ TEST_F(VemdCli, WritesTheLightsOfEveryFrameToTheJsonlFile) {
 }
 
 // SIGTERM stops the daemon cleanly: exit 0, and the recording it was making has its index.
+// The README's main job points --out at a folder that does not exist yet.
+TEST_F(VemdCli, OutFolderThatDoesNotExistYetIsCreatedWithJsonlAndNumberedPreviews) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 5, false);
+  const fs::path out = dir_ / "new" / "out";
+  const DaemonRun r = run("--source replay:" + path.string() + " --rate max --lights 16 --out " +
+                          out.string() + " --jsonl lights.jsonl --preview-every 2 --preview-numbered");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string lines = slurp(out / "lights.jsonl");
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 5) << lines;
+  EXPECT_TRUE(fs::exists(out / "preview.png"));
+  for (const char* kept : {"preview-0000000000.png", "preview-0000000002.png",
+                           "preview-0000000004.png"}) {
+    EXPECT_TRUE(fs::exists(out / kept)) << kept;
+  }
+  EXPECT_FALSE(fs::exists(out / "preview-0000000001.png"));
+}
+
+TEST_F(VemdCli, OutPathThatIsAFileIsRefusedInOneSentence) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 2, false);
+  std::ofstream(dir_ / "a-file") << "x";
+  const DaemonRun r = run("--source replay:" + path.string() + " --out " +
+                          (dir_ / "a-file").string() + " --jsonl lights.jsonl");
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("output.dir: cannot use " + (dir_ / "a-file").string() +
+                       " as the output folder"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(VemdCli, SigtermStopsCleanlyAndTheRecordingGetsItsIndex) {
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 4, false);
@@ -205,7 +236,7 @@ TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {
 
 TEST_F(VemdCli, BadFlagExitsWithUsageStatus) {
   const DaemonRun r = run("--lights 0");
-  EXPECT_NE(r.exitCode, 0);
+  EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("--lights: expected a whole number from 1 to 65536, found 0"),
             std::string::npos)
       << r.err;

@@ -107,9 +107,12 @@ std::expected<PendingRecording, std::string> PendingRecording::create(
         out.string()));
   }
   const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  std::error_code createError;
+  fs::create_directories(folder, createError);
   if (!fs::is_directory(folder, error)) {
-    return std::unexpected(
-        fmt::format("{}: the folder {} does not exist", out.string(), folder.string()));
+    return std::unexpected(fmt::format("{}: cannot create the folder {} ({})", out.string(),
+                                       folder.string(),
+                                       createError ? createError.message() : "not a folder"));
   }
   const fs::path temporary =
       folder / fmt::format(".{}.partial-{}", out.filename().string(), ::getpid());

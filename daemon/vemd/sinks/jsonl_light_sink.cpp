@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cassert>
 #include <cerrno>
 #include <cstring>
 #include <utility>
@@ -63,7 +64,8 @@ JsonlLightSink::JsonlLightSink(std::filesystem::path path, recording::FileDescri
     : path_(std::move(path)), fd_(std::move(fd)), clusterRadiusRad_(clusterRadiusRad) {}
 
 std::expected<void, SinkFailure> JsonlLightSink::consume(const ProcessedFrame& frame) {
-  if (failed_ || frame.captured == nullptr) return {};
+  assert(frame.captured != nullptr);  // the pipeline always sets it
+  if (failed_) return {};
   const std::string text = lightsLineJson(frame, lines_, clusterRadiusRad_).dump() + '\n';
   std::size_t written = 0;
   if (const int error = writeAll(fd_.get(), text, written); error != 0) {

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -74,8 +75,8 @@ std::filesystem::path PreviewSink::numberedPath(std::uint64_t seq) const {
 }
 
 std::expected<void, SinkFailure> PreviewSink::consume(const ProcessedFrame& frame) {
-  if (failed_ || frame.captured == nullptr || frame.polar == nullptr ||
-      frame.polar->pixelCount() == 0) {
+  assert(frame.captured != nullptr && frame.polar != nullptr);  // the pipeline always sets them
+  if (failed_ || frame.polar->pixelCount() == 0) {
     return {};
   }
   if (frames_++ % std::uint64_t(options_.every) != 0) return {};

@@ -1,5 +1,6 @@
 #include "vemd/sinks/recorder_sink.h"
 
+#include <cassert>
 #include <chrono>
 #include <ctime>
 #include <system_error>
@@ -47,7 +48,8 @@ RecorderSink::RecorderSink(std::filesystem::path path, recording::RecordingWrite
     : path_(std::move(path)), writer_(std::move(writer)) {}
 
 std::expected<void, SinkFailure> RecorderSink::consume(const ProcessedFrame& frame) {
-  if (!writer_ || frame.captured == nullptr) return {};
+  assert(frame.captured != nullptr);  // the pipeline always sets it
+  if (!writer_) return {};
   const CapturedFrame& captured = *frame.captured;
   auto appended =
       writer_->append(captured.seq, captured.captureTsNs, captured.frame, &frame.lights);
