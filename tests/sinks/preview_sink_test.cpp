@@ -222,11 +222,12 @@ TEST_F(PreviewSinkTest, ReaderOfTheOldPreviewKeepsAWholeImageWhileANewOneIsWritt
       cv::imdecode(std::vector<unsigned char>(seen.begin(), seen.end()), cv::IMREAD_COLOR).empty());
 }
 
-TEST_F(PreviewSinkTest, FrameWithoutPolarMapIsSkipped) {
+TEST_F(PreviewSinkTest, FrameWithAnEmptyPolarMapIsSkipped) {
   auto sink = PreviewSink::create(dir_, {.every = 1, .numbered = false, .style = style()});
   ASSERT_TRUE(sink);
   TestFrame frame(0);
-  frame.processed.polar = nullptr;
+  const EnvMap empty;
+  frame.processed.polar = &empty;
   ASSERT_TRUE(sink->consume(frame.processed));
   EXPECT_EQ(sink->imagesWritten(), 0U);
   EXPECT_FALSE(fs::exists(sink->latestPath()));
