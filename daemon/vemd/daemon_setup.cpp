@@ -88,7 +88,7 @@ RecordingContext recordingContext(const SourceDescription& source) {
 
 std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config) {
   Daemon daemon;
-  auto source = makeSource(config.source);
+  auto source = makeSource(config.source, config.camera, config.bracketing);
   if (!source) return std::unexpected(source.error());
   daemon.source = std::move(*source);
   const SourceDescription description = daemon.source->describe();

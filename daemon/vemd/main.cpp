@@ -11,6 +11,7 @@
 #include <spdlog/spdlog.h>
 
 #include "vemd/daemon_loop.h"
+#include "vemd/device_list.h"
 #include "vemd/daemon_setup.h"
 #include "vemd/service_observer.h"
 #include "vemd/vemd_config.h"
@@ -44,6 +45,10 @@ int main(int argc, char** argv) {
     std::cout << config.error().out;
     std::cerr << config.error().err;
     return config.error().exitCode;
+  }
+  if (config->listDevices) {
+    std::cout << deviceListText();
+    return 0;
   }
   installStopHandlers();
   auto daemon = buildDaemon(*config);

@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 #include <CLI/CLI.hpp>
 
+#include "calib/core/raw_frame.h"
 #include "core/default_pattern.h"
 #include "vemd/toml_section_reader.h"
 
@@ -30,15 +31,23 @@ constexpr double kMaxCorrectionFactor = 10.0;
 constexpr std::int64_t kMaxEvery = 1'000'000;
 constexpr std::int64_t kMaxPreviewScale = 16;
 constexpr double kMaxStatsEveryS = 86400.0;
+constexpr std::int64_t kMaxSensorSide = 65536;
+constexpr double kMaxExposureUs = 60e6;  // a minute
+constexpr double kMaxGain = 1e6;
 constexpr const char* kRateExpected =
     "\"recorded\", \"max\" or a number of frames per second above 0 and at most 10000";
 
 // The keys of each section, in the order config/vemd.toml documents them.
-constexpr std::string_view kTopKeys[] = {"version",    "source", "processing", "filter",
-                                         "clustering", "output", "stats"};
+constexpr std::string_view kTopKeys[] = {"version", "source",     "camera", "bracketing",
+                                         "processing", "filter", "clustering", "output", "stats"};
 constexpr std::string_view kSourceKeys[] = {
     "spec",         "rate",   "loop",       "frames", "queue_depth", "retry_initial_ms",
     "retry_max_ms", "camera", "noise_code", "seed"};
+constexpr std::string_view kCameraKeys[] = {"pixel_format",  "width_px", "height_px",
+                                            "exposure_us",   "gain",     "frame_rate_hz",
+                                            "buffers",       "timeout_ms"};
+constexpr std::string_view kBracketingKeys[] = {"count", "stops", "base_exposure_us",
+                                                "match_tolerance"};
 constexpr std::string_view kProcessingKeys[] = {"map_width", "map_height", "lights", "sampler"};
 constexpr std::string_view kFilterKeys[] = {"preset"};
 constexpr std::string_view kClusteringKeys[] = {"enabled", "budget", "correction_factor"};
@@ -72,6 +81,31 @@ void readSource(TomlSectionReader r, SourceConfig& s) {
     r.fail("retry_max_ms", fmt::format("at least source.retry_initial_ms ({})", s.retryInitialMs),
            std::to_string(s.retryMaxMs));
   }
+}
+
+void readCamera(TomlSectionReader r, CameraConfig& c) {
+  r.onlyKeys(kCameraKeys);
+  r.text("pixel_format", c.pixelFormat);
+  if (!c.pixelFormat.empty() && !calib::parsePixelFormat(c.pixelFormat)) {
+    r.fail("pixel_format", "\"\", \"Mono8\", \"Mono10\", \"Mono12\", \"Mono16\", \"RGB8\" ... \"RGB16\"",
+           "the string \"" + c.pixelFormat + "\"");
+  }
+  r.wholeNumber("width_px", 0, kMaxSensorSide, c.widthPx);
+  r.wholeNumber("height_px", 0, kMaxSensorSide, c.heightPx);
+  r.number("exposure_us", 0.0, kMaxExposureUs, c.exposureUs);
+  r.number("gain", 0.0, kMaxGain, c.gain);
+  r.number("frame_rate_hz", 0.0, 10000.0, c.frameRateHz);
+  r.wholeNumber("buffers", 2, 64, c.buffers);
+  r.wholeNumber("timeout_ms", 1, 600'000, c.timeoutMs);
+}
+
+void readBracketing(TomlSectionReader r, BracketingConfig& b) {
+  r.onlyKeys(kBracketingKeys);
+  r.wholeNumber("count", 0, 9, b.count);
+  if (b.count == 1) r.fail("count", "0 (off) or 2 to 9", "1");
+  r.number("stops", 0.5, 8.0, b.stops);
+  r.number("base_exposure_us", 1.0, 1e7, b.baseExposureUs);
+  r.number("match_tolerance", 0.001, 0.5, b.matchTolerance);
 }
 
 void readProcessing(TomlSectionReader r, ProcessingOptions& p) {
@@ -170,7 +204,7 @@ CLI::Validator rateCheck() {
 }
 
 struct Flags {
-  std::optional<std::string> config, source, rate, out, record, jsonl;
+  std::optional<std::string> config, source, rate, out, record, jsonl, camera;
   std::optional<std::uint64_t> frames;
   std::optional<std::size_t> lights;
   std::optional<int> cluster;
@@ -178,12 +212,19 @@ struct Flags {
   std::optional<double> statsEvery;
   bool loop = false;
   bool previewNumbered = false;
+  bool listDevices = false;
 };
 
 void addFlags(CLI::App& app, Flags& f) {
   app.add_option("--config", f.config, "Configuration file (TOML; see config/vemd.toml)")
       ->type_name("FILE");
-  app.add_option("--source", f.source, "replay:FILE.vem | synthetic:SCENE")->type_name("SPEC");
+  app.add_option("--source", f.source,
+                 "replay:FILE.vem | synthetic:SCENE | aravis:ID | v4l2:DEVICE | libcamera:ID")
+      ->type_name("SPEC");
+  app.add_option("--camera", f.camera,
+                 "The camera file (calibration; for synthetic scenes the simulated camera)")
+      ->type_name("FILE");
+  app.add_flag("--list-devices", f.listDevices, "List the cameras every backend sees, and exit");
   app.add_option("--frames", f.frames, "Stop after N frames from the source (0: no limit)")
       ->type_name("N")
       ->check(wholeNumberCheck(0, kMaxFrames));
@@ -215,6 +256,8 @@ void addFlags(CLI::App& app, Flags& f) {
 
 void applyFlags(const Flags& f, VemdConfig& c) {
   if (f.source) c.source.spec = *f.source;
+  if (f.camera) c.source.camera = *f.camera;
+  if (f.listDevices) c.listDevices = true;
   if (f.frames) c.source.frames = *f.frames;
   if (f.rate) c.source.rate = *parseSourceRate(*f.rate);
   if (f.loop) c.source.loop = true;
@@ -236,6 +279,8 @@ constexpr const char* kFooter =
     "  vemd --source replay:sky.vem --rate max --frames 300\n"
     "  vemd --config /etc/vemcast/vemd.toml\n"
     "  vemd --source synthetic:sky --jsonl lights.jsonl --record runs/\n"
+    "  vemd --source v4l2:/dev/video0 --camera my-camera.toml --preview-every 30\n"
+    "  vemd --list-devices\n"
     "Flags override the configuration file; config/vemd.toml documents every key.\n"
     "SIGINT and SIGTERM stop vemd cleanly (sinks closed, a recording indexed).";
 
@@ -248,6 +293,8 @@ const std::vector<ConfigSection>& configSchema() {
     };
     return std::vector<ConfigSection>{{"", {"version"}},
                                       {"source", list(kSourceKeys)},
+                                      {"camera", list(kCameraKeys)},
+                                      {"bracketing", list(kBracketingKeys)},
                                       {"processing", list(kProcessingKeys)},
                                       {"filter", list(kFilterKeys)},
                                       {"clustering", list(kClusteringKeys)},
@@ -274,6 +321,8 @@ std::expected<VemdConfig, std::string> parseConfig(const std::string& text,
   std::int64_t version = 1;
   top.wholeNumber("version", 1, 1, version);
   readSource({section(document, "source", top), "source", status}, config.source);
+  readCamera({section(document, "camera", top), "camera", status}, config.camera);
+  readBracketing({section(document, "bracketing", top), "bracketing", status}, config.bracketing);
   readProcessing({section(document, "processing", top), "processing", status}, config.processing);
   readFilter({section(document, "filter", top), "filter", status}, config.processing);
   readClustering({section(document, "clustering", top), "clustering", status}, config.processing);

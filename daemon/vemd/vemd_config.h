@@ -1,13 +1,14 @@
 // VemdConfig: everything vemd can be told, from config/vemd.toml (every key documented there with
 // its default) and the command line, which overrides the file.
 //
-// File: TOML, sections [source], [processing], [filter], [clustering], [output], [stats]; every
+// File: TOML, sections [source], [camera], [bracketing], [processing], [filter], [clustering],
+// [output], [stats]; every
 // key is optional (the built-in default applies), a key or section that is not listed is refused,
 // and so is a value of the wrong type or out of range, in one sentence:
 //   "vemd.toml: processing.lights: expected a whole number from 1 to 65536, found 0".
 // Flags: --config FILE, --source SPEC, --frames N, --rate recorded|max|HZ, --loop, --lights N,
 // --cluster Q (0: off), --out DIR, --record FILE, --jsonl FILE, --preview-every N (0: off),
-// --stats-every S; a bad flag value is refused the same way ("--lights: expected ...").
+// --stats-every S, --camera FILE, --list-devices; a bad flag value is refused the same way ("--lights: expected ...").
 //
 // Units are in the key names: ..._ms milliseconds, ..._s seconds, rate in frames per second.
 #pragma once
@@ -31,7 +32,8 @@ struct SourceConfig {
   std::size_t queueDepth = 4;
   std::int64_t retryInitialMs = 100;
   std::int64_t retryMaxMs = 5000;
-  std::string camera;      // synthetic: the camera file; "": the built-in example camera
+  std::string camera;  // the camera file: synthetic (its truth; "": the built-in example camera)
+                       // and live cameras (their calibration; required)
   double noiseCode = 0.0;  // synthetic: Gaussian read noise, in codes
   std::uint64_t seed = 1;  // synthetic: the noise, and the clouds scene's field
   friend bool operator==(const SourceConfig&, const SourceConfig&) = default;
@@ -48,6 +50,29 @@ struct OutputConfig {
   friend bool operator==(const OutputConfig&, const OutputConfig&) = default;
 };
 
+// [camera]: what vemd asks of a live camera (aravis:, v4l2:, libcamera:; docs/cameras.md).
+// 0 or "" leaves the camera's own value.
+struct CameraConfig {
+  std::string pixelFormat;  // "Mono8" ... "RGB16" (calib's names); "": the deepest offered
+  std::int64_t widthPx = 0;
+  std::int64_t heightPx = 0;
+  double exposureUs = 0.0;   // manual exposure, microseconds; 0: the camera's (auto) exposure
+  double gain = 0.0;         // linear (1 = unity); 0: the camera's
+  double frameRateHz = 0.0;  // 0: the camera's
+  std::int64_t buffers = 4;
+  std::int64_t timeoutMs = 1000;
+  friend bool operator==(const CameraConfig&, const CameraConfig&) = default;
+};
+
+// [bracketing]: exposure bracketing for cameras without an HDR sensor (docs/cameras.md).
+struct BracketingConfig {
+  std::int64_t count = 0;         // exposures per group; 0: off, else 2 to 9
+  double stops = 2.0;             // between neighbouring exposures
+  double baseExposureUs = 1000.0; // the shortest exposure
+  double matchTolerance = 0.05;   // a frame's reported exposure vs the bracket's, relative
+  friend bool operator==(const BracketingConfig&, const BracketingConfig&) = default;
+};
+
 struct StatsConfig {
   double everyS = 5.0;  // a report line every this many seconds; 0: only at exit
   friend bool operator==(const StatsConfig&, const StatsConfig&) = default;
@@ -55,9 +80,12 @@ struct StatsConfig {
 
 struct VemdConfig {
   SourceConfig source;
+  CameraConfig camera;
+  BracketingConfig bracketing;
   ProcessingOptions processing;  // [processing], [filter] and [clustering]
   OutputConfig output;
   StatsConfig stats;
+  bool listDevices = false;  // --list-devices (command line only): list the cameras and exit
   friend bool operator==(const VemdConfig&, const VemdConfig&) = default;
 };
 

@@ -8,7 +8,9 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 #include <fmt/chrono.h>
@@ -56,10 +58,20 @@ class CapturingReporter : public benchmark::ConsoleReporter {
 
 int main(int argc, char** argv) {
   std::string reportPath;
+  std::vector<std::string> included;  // --include FILE: a markdown section another program made
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     if (std::strcmp(argv[i], "--report") == 0 && i + 1 < argc) {
       reportPath = argv[++i];
+    } else if (std::strcmp(argv[i], "--include") == 0 && i + 1 < argc) {
+      std::ifstream section(argv[++i]);
+      std::ostringstream text;
+      text << section.rdbuf();
+      if (!section) {
+        std::cerr << "vem_bench: --include " << argv[i] << ": cannot read the file\n";
+        return 1;
+      }
+      included.push_back(text.str());
     } else {
       args.push_back(argv[i]);
     }
@@ -82,7 +94,7 @@ int main(int argc, char** argv) {
   benchmark::Shutdown();
   if (reportPath.empty()) return 0;
 
-  vem::bench::ReportInputs inputs{reporter.timesUs, reporter.minTimesUs, counts};
+  vem::bench::ReportInputs inputs{reporter.timesUs, reporter.minTimesUs, counts, included};
   std::ofstream out(reportPath);
   out << vem::bench::writeReport(inputs, std::filesystem::path(reportPath).parent_path());
   if (!out) {

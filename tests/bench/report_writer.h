@@ -13,6 +13,7 @@ struct ReportInputs {
   const std::map<std::string, double>& timesUs;     // benchmark name -> microseconds (median)
   const std::map<std::string, double>& minTimesUs;  // the fastest repetition, where measured
   std::vector<std::size_t> counts;                  // the N of the accuracy study
+  std::vector<std::string> includedSections;  // markdown made by other programs (--include)
 };
 
 // The markdown text; writes accuracy-vs-time.svg into `docsDir`.

@@ -94,7 +94,8 @@ TEST(VemdConfig, MisspeltKeyIsRefusedNamingItAndTheKnownKeys) {
 
 TEST(VemdConfig, MisspeltSectionIsRefused) {
   EXPECT_EQ(refusal("[proccessing]\nlights = 64\n"),
-            "vemd.toml: proccessing: unknown section (expected one of: version, source, "
+            "vemd.toml: proccessing: unknown section (expected one of: version, source, camera, "
+            "bracketing, "
             "processing, filter, clustering, output, stats)");
 }
 
@@ -247,13 +248,17 @@ TEST(SourceRate, ParsesRecordedMaxAndHertzAndRefusesTheRest) {
 
 TEST(SourceSpec, NamesWhatWasExpected) {
   EXPECT_EQ(vemd::parseSourceSpec("camera:0").error(),
-            "source \"camera:0\": unknown kind \"camera\" (expected replay:FILE.vem or "
-            "synthetic:SCENE)");
+            "source \"camera:0\": unknown kind \"camera\" (expected replay:FILE.vem, "
+            "synthetic:SCENE, aravis:ID, v4l2:DEVICE or libcamera:ID)");
+  EXPECT_EQ(vemd::parseSourceSpec("v4l2:").error(),
+            "source \"v4l2:\": expected a device path or name after \"v4l2:\"");
+  EXPECT_EQ(vemd::parseSourceSpec("aravis:127.0.0.1")->kind, vemd::SourceSpec::Kind::Aravis);
+  EXPECT_EQ(vemd::parseSourceSpec("libcamera:0")->kind, vemd::SourceSpec::Kind::Libcamera);
   EXPECT_EQ(vemd::parseSourceSpec("replay:").error(),
             "source \"replay:\": expected a file after \"replay:\"");
   EXPECT_EQ(vemd::parseSourceSpec("").error(),
             "no source given: expected --source (or source.spec in the configuration) "
-            "replay:FILE.vem or synthetic:SCENE");
+            "replay:FILE.vem, synthetic:SCENE, aravis:ID, v4l2:DEVICE or libcamera:ID");
   auto spec = vemd::parseSourceSpec("replay:a:b.vem");
   ASSERT_TRUE(spec);
   EXPECT_EQ(spec->argument, "a:b.vem");
@@ -265,6 +270,57 @@ TEST_F(VemdConfigFiles, ReplayOfAMissingFileIsRefusedWithTheReadersSentence) {
   auto made = vemd::makeSource(source);
   ASSERT_FALSE(made);
   EXPECT_EQ(made.error(), (dir_ / "none.vem").string() + ": no such file");
+}
+
+TEST(VemdConfig, CameraAndBracketingSectionsAreReadAndRangeChecked) {
+  auto config = parseConfig(
+      "[camera]\npixel_format = \"Mono12\"\nexposure_us = 250.0\ngain = 2.0\nbuffers = 6\n"
+      "[bracketing]\ncount = 3\nstops = 2.5\nbase_exposure_us = 100.0\n",
+      "vemd.toml");
+  ASSERT_TRUE(config) << config.error();
+  EXPECT_EQ(config->camera.pixelFormat, "Mono12");
+  EXPECT_EQ(config->camera.exposureUs, 250.0);
+  EXPECT_EQ(config->camera.gain, 2.0);
+  EXPECT_EQ(config->camera.buffers, 6);
+  EXPECT_EQ(config->bracketing.count, 3);
+  EXPECT_EQ(config->bracketing.stops, 2.5);
+  EXPECT_EQ(config->bracketing.baseExposureUs, 100.0);
+  EXPECT_EQ(refusal("[camera]\npixel_format = \"Y16\"\n"),
+            "vemd.toml: camera.pixel_format: expected \"\", \"Mono8\", \"Mono10\", \"Mono12\", "
+            "\"Mono16\", \"RGB8\" ... \"RGB16\", found the string \"Y16\"");
+  EXPECT_EQ(refusal("[bracketing]\ncount = 1\n"),
+            "vemd.toml: bracketing.count: expected 0 (off) or 2 to 9, found 1");
+  EXPECT_EQ(refusal("[camera]\nbuffers = 1\n"),
+            "vemd.toml: camera.buffers: expected a whole number from 2 to 64, found 1");
+}
+
+TEST(VemdCommandLine, CameraFileAndListDevicesFlagsAreRead) {
+  auto config = vemd::parseCommandLine({"vemd", "--camera", "cam.toml", "--list-devices"});
+  ASSERT_TRUE(config);
+  EXPECT_EQ(config->source.camera, "cam.toml");
+  EXPECT_TRUE(config->listDevices);
+}
+
+TEST(VemdSources, LiveCameraWithoutACameraFileIsRefusedBeforeOpeningIt) {
+  vemd::SourceConfig source;
+  source.spec = "v4l2:/dev/video-that-is-not-there";
+  auto made = vemd::makeSource(source);
+  ASSERT_FALSE(made);
+  EXPECT_EQ(made.error(),
+            "source \"v4l2:/dev/video-that-is-not-there\": a live camera needs its camera file "
+            "(--camera FILE or source.camera; docs/calibration.md makes one)");
+}
+
+TEST_F(VemdConfigFiles, BracketingAReplayIsRefused) {
+  vemd::SourceConfig source;
+  source.spec = "replay:" + (dir_ / "none.vem").string();
+  vemd::BracketingConfig bracketing;
+  bracketing.count = 3;
+  auto made = vemd::makeSource(source, {}, bracketing);
+  ASSERT_FALSE(made);
+  EXPECT_NE(made.error().find("bracketing needs a camera with exposure control"),
+            std::string::npos)
+      << made.error();
 }
 
 }  // namespace

@@ -1,0 +1,90 @@
+// vem_camera_bench: the latency from a camera backend handing over a frame to vemd's lights, per
+// backend path, each against its fake (camera_latency.h). Writes a markdown section for
+// docs/BENCHMARKS.md (the `bench` target includes it) and prints it.
+//
+//   vem_camera_bench [--frames N] [--report FILE.md]
+//
+// The Aravis path opens a fake GigE Vision camera on 127.0.0.1: run this only inside its own
+// network namespace (the `bench` target does: unshare -n), never on a machine's real network.
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "bench/cameras/camera_latency.h"
+
+namespace {
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  std::ranges::sort(v);
+  const double at = q * double(v.size() - 1);
+  const auto lo = std::size_t(at);
+  const std::size_t hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (at - double(lo)) * (v[hi] - v[lo]);
+}
+
+std::string report(const std::vector<vem::bench::LatencyRun>& runs, int frames) {
+  std::string md = fmt::format(
+      "## Camera backends: frame to lights\n\n"
+      "`vem_camera_bench --frames {}` (run by the `bench` target inside its own network namespace): "
+      "each backend path delivers 1280x1024 Mono16 frames of the synthetic sky from its fake "
+      "camera through the real backend code, and vemd's pipeline (1024x256 map, 1024 lights, "
+      "Paper9 filter, no clustering) turns each into lights on the same thread. Latency from the "
+      "backend handing the frame over (`arrivalNs`) to the lights being ready, microseconds.\n\n"
+      "| path | frames | median | p99 | max | lost | notes |\n|---|---:|---:|---:|---:|---:|---|\n",
+      frames);
+  for (const auto& run : runs) {
+    if (!run.error.empty()) {
+      md += fmt::format("| {} | - | - | - | - | - | did not run: {} |\n", run.path, run.error);
+      continue;
+    }
+    md += fmt::format("| {} | {} | {:.0f} | {:.0f} | {:.0f} | {} | {} |\n", run.path,
+                      run.latencyUs.size(), quantile(run.latencyUs, 0.5),
+                      quantile(run.latencyUs, 0.99),
+                      run.latencyUs.empty() ? 0.0 : std::ranges::max(run.latencyUs),
+                      run.framesLost, run.notes);
+  }
+  return md;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int frames = 200;
+  std::string reportPath;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
+      frames = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--report") == 0 && i + 1 < argc) {
+      reportPath = argv[++i];
+    } else {
+      std::cerr << "usage: vem_camera_bench [--frames N] [--report FILE.md]\n";
+      return 2;
+    }
+  }
+  if (frames < 10) {
+    std::cerr << "vem_camera_bench: --frames: expected at least 10\n";
+    return 2;
+  }
+  std::vector<vem::bench::LatencyRun> runs;
+  runs.push_back(vem::bench::benchAravisFakeCamera(frames));
+  runs.push_back(vem::bench::benchV4l2FakeDevice(frames));
+  runs.push_back(vem::bench::benchLibcameraFakeCamera(frames));
+  const std::string md = report(runs, frames);
+  std::cout << md;
+  if (!reportPath.empty()) {
+    std::ofstream out(reportPath);
+    out << md;
+    if (!out) {
+      std::cerr << "vem_camera_bench: cannot write " << reportPath << "\n";
+      return 1;
+    }
+  }
+  return 0;
+}
