@@ -35,16 +35,6 @@ std::expected<calib::CameraCalibration, std::string> monoExampleCamera() {
   return *camera;
 }
 
-vemd::ProcessingOptions benchOptions() {
-  vemd::ProcessingOptions o;
-  o.mapWidth = 1024;
-  o.mapHeight = 256;
-  o.lightCount = 1024;
-  o.filter = FilterPreset::Paper9;
-  o.clustering = false;
-  return o;
-}
-
 }  // namespace
 
 LatencyRun benchLibcameraFakeCamera(int frames) {
@@ -73,7 +63,7 @@ LatencyRun benchLibcameraFakeCamera(int frames) {
     run.error = source.error().message;
     return run;
   }
-  auto pipeline = vemd::Pipeline::create(toml, "the example camera as Mono16", benchOptions());
+  auto pipeline = vemd::Pipeline::create(toml, "the example camera as Mono16", cameraBenchProcessing());
   if (!pipeline) {
     run.error = pipeline.error();
     return run;
@@ -83,26 +73,7 @@ LatencyRun benchLibcameraFakeCamera(int frames) {
       "thread at up to {} Hz; one copy from the mapped buffer into RawFrame (16-bit words)",
       kWidth, kHeight, settings.buffers, kRateHz);
 
-  int failures = 0;
-  for (int k = 0; k < kWarmupFrames + frames;) {
-    auto captured = (*source)->next();
-    if (!captured) {
-      if (++failures > 20) {
-        run.error = captured.error().message;
-        break;
-      }
-      continue;
-    }
-    if (auto problem = pipeline->frameProblem(captured->frame)) {
-      run.error = *problem;
-      break;
-    }
-    (void)pipeline->process(*captured);
-    const std::int64_t readyNs = vemd::monotonicNowNs();
-    if (k >= kWarmupFrames) run.latencyUs.push_back(double(readyNs - captured->arrivalNs) * 1e-3);
-    (*source)->recycle(std::move(*captured));
-    ++k;
-  }
+  measureFrameToLights(**source, *pipeline, kWarmupFrames, frames, run);
   const cameras::LibcameraCounters counters = (*source)->counters();
   run.framesLost = counters.lost + counters.bad;
   return run;

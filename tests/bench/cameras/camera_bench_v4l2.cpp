@@ -54,16 +54,6 @@ std::vector<std::vector<std::uint8_t>> skyBuffers(const calib::CameraCalibration
   return buffers;
 }
 
-vemd::ProcessingOptions benchProcessing() {
-  vemd::ProcessingOptions o;
-  o.mapWidth = 1024;
-  o.mapHeight = 256;
-  o.lightCount = 1024;
-  o.filter = FilterPreset::Paper9;
-  o.clustering = false;
-  return o;
-}
-
 }  // namespace
 
 LatencyRun benchV4l2FakeDevice(int frames) {
@@ -101,7 +91,7 @@ LatencyRun benchV4l2FakeDevice(int frames) {
     return run;
   }
   auto pipeline = vemd::Pipeline::create((*source)->describe().calibrationToml,
-                                         "the example camera as Mono16", benchProcessing());
+                                         "the example camera as Mono16", cameraBenchProcessing());
   if (!pipeline) {
     run.error = pipeline.error();
     return run;
@@ -112,26 +102,7 @@ LatencyRun benchV4l2FakeDevice(int frames) {
       "camera as Mono16",
       (*source)->bufferCount());
 
-  run.latencyUs.reserve(std::size_t(std::max(frames, 0)));
-  for (int i = 0; i < kWarmUpFrames + frames; ++i) {
-    auto captured = (*source)->next();
-    if (!captured) {
-      if (captured.error().cause == vemd::SourceErrorCause::NoDevice) {
-        run.error = captured.error().message;
-        break;
-      }
-      continue;
-    }
-    if (auto problem = pipeline->frameProblem(captured->frame)) {
-      run.error = *problem;
-      break;
-    }
-    const vemd::ProcessedFrame& processed = pipeline->process(*captured);
-    const std::int64_t readyNs = vemd::monotonicNowNs();
-    (void)processed;
-    if (i >= kWarmUpFrames) run.latencyUs.push_back(double(readyNs - captured->arrivalNs) / 1e3);
-    (*source)->recycle(std::move(*captured));
-  }
+  measureFrameToLights(**source, *pipeline, kWarmUpFrames, frames, run);
   const cameras::V4l2Counters& counters = (*source)->counters();
   run.framesLost = counters.lost + counters.shortFrames + counters.corruptFrames;
   return run;
