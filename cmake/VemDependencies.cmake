@@ -30,3 +30,4 @@ if(VEM_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
 endif()
 find_package(fmt REQUIRED)                       # libfmt-dev (with spdlog): formatting in the shells
+find_package(OpenSSL REQUIRED)                   # libssl-dev: TLS (wss://) for vemd's stream server

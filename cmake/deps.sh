@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libglm-dev libnanoflann-dev libopenexr-dev libopencv-dev libcli11-dev nlohmann-json3-dev
   libspdlog-dev libliquid-dev libtomlplusplus-dev
-  libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev
+  libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev libssl-dev
   libsystemd-dev
   libaravis-dev libusb-1.0-0-dev aravis-tools libcamera-dev v4l-utils iproute2 util-linux
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -28,6 +28,12 @@ void CaptureThread::stop() {
   frames_.close();
 }
 
+std::optional<SourceErrorCause> CaptureThread::failure() const {
+  const int cause = failure_.load();
+  if (cause == kNoFailure) return std::nullopt;
+  return SourceErrorCause(cause);
+}
+
 void CaptureThread::join() {
   if (thread_.joinable()) thread_.join();
 }
@@ -41,6 +47,7 @@ void CaptureThread::run() {
       if (frame.error().cause == SourceErrorCause::EndOfStream) {
         spdlog::info("source: {}", frame.error().message);
         endOfStream_.store(true);
+        failure_.store(int(SourceErrorCause::EndOfStream));
         break;
       }
       if (!backOff(frame.error())) break;
@@ -49,6 +56,7 @@ void CaptureThread::run() {
     if (failing_) {
       spdlog::info("source: frames again after {} failed attempt(s)", failedAttempts_);
       failing_ = false;
+      failure_.store(kNoFailure);
       failedAttempts_ = 0;
       backoff_ = options_.retryInitial;
     }
@@ -70,6 +78,7 @@ bool CaptureThread::backOff(const SourceError& error) {
                  options_.retryMax.count());
     failing_ = true;
     failingCause_ = error.cause;
+    failure_.store(int(error.cause));
   }
   const auto wait = backoff_;
   backoff_ = std::min(options_.retryMax, backoff_ * 2);

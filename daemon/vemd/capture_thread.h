@@ -16,6 +16,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <thread>
 
 #include "vemd/captured_frame.h"
@@ -47,6 +48,9 @@ class CaptureThread {
   [[nodiscard]] bool frameLimitReached() const { return limitReached_.load(); }
   [[nodiscard]] std::uint64_t sourceErrors() const { return sourceErrors_.load(); }
   [[nodiscard]] std::uint64_t framesDelivered() const { return delivered_.load(); }
+  // Why the source gives no frames now: the cause of the current run of failures, EndOfStream
+  // once it ended; empty while frames flow (and before the first attempt). Any thread.
+  [[nodiscard]] std::optional<SourceErrorCause> failure() const;
 
  private:
   void run();
@@ -65,6 +69,8 @@ class CaptureThread {
   std::atomic<bool> limitReached_{false};
   std::atomic<std::uint64_t> sourceErrors_{0};
   std::atomic<std::uint64_t> delivered_{0};
+  std::atomic<int> failure_{kNoFailure};  // a SourceErrorCause, or kNoFailure
+  static constexpr int kNoFailure = -1;
   // Error state, on the capture thread only.
   bool failing_ = false;
   SourceErrorCause failingCause_ = SourceErrorCause::Timeout;

@@ -28,17 +28,19 @@ class NullObserver final : public LoopObserver {};
 class ProcessingLoop {
  public:
   ProcessingLoop(Pipeline& pipeline, SinkSet& sinks, const LoopOptions& options,
-                 const SourceDescription& source, LoopObserver& observer)
+                 const SourceDescription& source, LoopObserver& observer, LoopControl* control)
       : pipeline_(pipeline),
         sinks_(sinks),
         options_(options),
         liveClock_(source.liveClock),
         observer_(observer),
+        control_(control),
         stats_(monotonicNowNs()),
         nextReportNs_(monotonicNowNs() + reportPeriodNs()) {}
 
   StopReason run(FrameQueue<CapturedFrame>& frames, FrameQueue<CapturedFrame>& spares,
                  const CaptureThread& capture, const std::atomic<bool>& stopRequested) {
+    applyControl(frames.counters(), capture);
     for (;;) {
       if (stopRequested.load()) return StopReason::StopRequested;
       std::optional<CapturedFrame> captured = frames.popFor(kPollInterval);
@@ -49,6 +51,7 @@ class ProcessingLoop {
         return capture.frameLimitReached() ? StopReason::FrameLimit : StopReason::EndOfStream;
       }
       observer_.alive();
+      applyControl(frames.counters(), capture);
       reportIfDue(frames.counters(), capture.sourceErrors());
     }
   }
@@ -59,7 +62,8 @@ class ProcessingLoop {
     acceptAgain();
     const ProcessedFrame& processed = pipeline_.process(captured);
     const double sinksMicros = feedSinks(processed);
-    stats_.frameProcessed(processed, sinksMicros, monotonicNowNs(), liveClock_);
+    lastProcessedNs_ = monotonicNowNs();
+    stats_.frameProcessed(processed, sinksMicros, lastProcessedNs_, liveClock_);
     if (stats_.processed() == 1) observer_.firstFrameProcessed();
   }
 
@@ -89,8 +93,16 @@ class ProcessingLoop {
         .count();
   }
 
+  void applyControl(const QueueCounters& queue, const CaptureThread& capture) {
+    if (control_ == nullptr) return;
+    control_->betweenFrames(pipeline_, {stats_.processed(), queue.dropped, refusedTotal_,
+                                        capture.sourceErrors(), lastProcessedNs_,
+                                        capture.failure()});
+  }
+
   void refuse(const CapturedFrame& captured, const std::string& problem) {
     stats_.frameRefused();
+    ++refusedTotal_;
     ++refusedInARow_;
     if (refusedInARow_ == 1) {
       spdlog::warn(
@@ -122,23 +134,26 @@ class ProcessingLoop {
   const LoopOptions& options_;
   bool liveClock_;
   LoopObserver& observer_;
+  LoopControl* control_;  // may be null
   LoopStatistics stats_;
   std::int64_t nextReportNs_;
   std::uint64_t refusedInARow_ = 0;
   std::uint64_t sinkFailures_ = 0;
+  std::uint64_t refusedTotal_ = 0;
+  std::int64_t lastProcessedNs_ = 0;
 };
 
 }  // namespace
 
 LoopResult runDaemonLoop(FrameSource& source, Pipeline& pipeline, SinkSet& sinks,
                          const LoopOptions& options, const std::atomic<bool>& stopRequested,
-                         LoopObserver* observer) {
+                         LoopObserver* observer, LoopControl* control) {
   NullObserver none;
   LoopObserver& watcher = observer != nullptr ? *observer : none;
   const SourceDescription description = source.describe();
   FrameQueue<CapturedFrame> frames(options.queueDepth);
   FrameQueue<CapturedFrame> spares(options.queueDepth + 2);
-  ProcessingLoop processing(pipeline, sinks, options, description, watcher);
+  ProcessingLoop processing(pipeline, sinks, options, description, watcher, control);
   CaptureThread capture(
       source, frames, spares,
       {options.maxFrames, !description.paced, options.retryInitial, options.retryMax});

@@ -17,6 +17,10 @@
 // - Stop: `stopRequested` (set from a signal handler, say) is polled at least every
 //   kPollInterval; the current frame finishes, the capture thread is woken and joined, the sinks
 //   are closed, and the final report is logged.
+// - Control between frames: a LoopControl (optional) is called on the processing thread before
+//   the first frame, after every frame and at least every kPollInterval, never during a frame:
+//   the place where requests from other threads (the stream server's control messages) change
+//   the pipeline and where a status is published.
 // - Reports: every reportEveryS seconds (0: never) and at the end, one log line each
 //   (loop_statistics.h).
 #pragma once
@@ -25,6 +29,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "vemd/frame_source.h"
@@ -59,6 +64,24 @@ class LoopObserver {
   virtual void stopping() {}
 };
 
+// The loop's running totals, for a LoopControl.
+struct LoopCounters {
+  std::uint64_t processed = 0;
+  std::uint64_t dropped = 0;  // by the queue
+  std::uint64_t refused = 0;  // bad frames
+  std::uint64_t sourceErrors = 0;
+  std::int64_t lastProcessedNs = 0;  // CLOCK_MONOTONIC; 0 before the first frame
+  // Why the source gives no frames now (CaptureThread::failure); empty while frames flow.
+  std::optional<SourceErrorCause> sourceFailure;
+};
+
+// Work done between frames on the processing thread (see above).
+class LoopControl {
+ public:
+  virtual ~LoopControl() = default;
+  virtual void betweenFrames(Pipeline& pipeline, const LoopCounters& counters) = 0;
+};
+
 enum class StopReason { EndOfStream, FrameLimit, StopRequested };
 
 [[nodiscard]] const char* stopReasonName(StopReason reason);
@@ -74,6 +97,7 @@ struct LoopResult {
 [[nodiscard]] LoopResult runDaemonLoop(FrameSource& source, Pipeline& pipeline, SinkSet& sinks,
                                        const LoopOptions& options,
                                        const std::atomic<bool>& stopRequested,
-                                       LoopObserver* observer = nullptr);
+                                       LoopObserver* observer = nullptr,
+                                       LoopControl* control = nullptr);
 
 }  // namespace vem::vemd

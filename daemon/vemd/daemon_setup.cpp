@@ -86,7 +86,8 @@ RecordingContext recordingContext(const SourceDescription& source) {
   return context;
 }
 
-std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config) {
+std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config,
+                                               const ExtraSinks& extraSinks) {
   Daemon daemon;
   auto source = makeSource(config.source, config.camera, config.bracketing);
   if (!source) return std::unexpected(source.error());
@@ -105,6 +106,12 @@ std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config) {
   auto sinks =
       makeSinks(sinkConfig(config.output, config.processing), recordingContext(description));
   if (!sinks) return std::unexpected(sinks.error());
+  if (extraSinks) {
+    if (auto added = extraSinks(description, *sinks); !added) {
+      for (auto& sink : *sinks) (void)sink->close();  // a recording already created keeps its index
+      return std::unexpected(added.error());
+    }
+  }
   daemon.sinks = SinkSet(std::move(*sinks));
   daemon.loop = loopOptions(config);
   return daemon;

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <expected>
+#include <functional>
 #include <memory>
+#include <vector>
 #include <optional>
 #include <string>
 
@@ -26,7 +28,13 @@ struct Daemon {
   LoopOptions loop;
 };
 
-[[nodiscard]] std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config);
+// Sinks from outside vem_daemon (the stream server's, daemon/stream/stream_setup.h), made once the
+// source is known; they run after the configured ones. A failure stops the build like any other.
+using ExtraSinks = std::function<std::expected<void, std::string>(
+    const SourceDescription& source, std::vector<std::unique_ptr<Sink>>& sinks)>;
+
+[[nodiscard]] std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config,
+                                                           const ExtraSinks& extraSinks = {});
 
 // The pieces, for tests.
 [[nodiscard]] LoopOptions loopOptions(const VemdConfig& config);

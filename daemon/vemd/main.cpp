@@ -1,5 +1,6 @@
 // vemd: the capture daemon. Parses the configuration, builds source, pipeline and sinks, runs the
-// loop until the source ends, --frames is reached, or SIGINT/SIGTERM; docs/vemd.md.
+// loop until the source ends, --frames is reached, or SIGINT/SIGTERM; streams to render clients
+// ([stream], daemon/stream/stream_setup.h); docs/vemd.md.
 // Exit status: 0 after a clean stop, 1 when start-up failed or a sink failed, 2 for bad usage.
 #include <csignal>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "stream/stream_setup.h"
 #include "vemd/daemon_loop.h"
 #include "vemd/device_list.h"
 #include "vemd/daemon_setup.h"
@@ -51,7 +53,15 @@ int main(int argc, char** argv) {
     return 0;
   }
   installStopHandlers();
-  auto daemon = buildDaemon(*config);
+  vem::stream::Streaming streaming;  // outlives the daemon's sinks, which borrow the server
+  auto daemon = buildDaemon(
+      *config, [&](const SourceDescription& source, std::vector<std::unique_ptr<Sink>>& sinks)
+                   -> std::expected<void, std::string> {
+        auto started = vem::stream::startStreaming(*config, source, sinks);
+        if (!started) return std::unexpected(started.error());
+        streaming = std::move(*started);
+        return {};
+      });
   if (!daemon) {
     spdlog::error("{}", daemon.error());
     return 1;
@@ -62,6 +72,7 @@ int main(int argc, char** argv) {
                vem::presetName(config->processing.filter), daemon->sinks.size());
   ServiceObserver observer(ServiceNotifier::fromEnvironment());
   const LoopResult result = runDaemonLoop(*daemon->source, *daemon->pipeline, daemon->sinks,
-                                          daemon->loop, gStopRequested, &observer);
+                                          daemon->loop, gStopRequested, &observer,
+                                          streaming.control.get());
   return result.sinkFailures > 0 ? 1 : 0;
 }

@@ -89,6 +89,21 @@ Pipeline::Pipeline(calib::CameraCalibration calibration, const ProcessingOptions
   for (const char* stage : kStageNames) result_.timings.push_back({stage, 0.0});
 }
 
+std::expected<void, std::string> Pipeline::reconfigure(const ProcessingOptions& options) {
+  if (auto problem = processingOptionsProblem(options)) return std::unexpected(*problem);
+  if (options.mapWidth != options_.mapWidth || options.mapHeight != options_.mapHeight) {
+    remap_ = calib::buildPolarRemap(*calibration_.lens, calibration_.orientation,
+                                    calibration_.camera.sensorWidthPx,
+                                    calibration_.camera.sensorHeightPx, MapLayout::Hemisphere,
+                                    options.mapWidth, options.mapHeight);
+  }
+  if (options.filter != options_.filter) filter_ = TemporalFilter(presetTaps(options.filter));
+  clusteringParams_ = {options.clusterBudget, options.clusterCorrectionFactor,
+                       MapLayout::Hemisphere};
+  options_ = options;
+  return {};
+}
+
 std::optional<std::string> Pipeline::frameProblem(const calib::RawFrame& frame) const {
   const calib::CameraIdentity& camera = calibration_.camera;
   if (frame.width != camera.sensorWidthPx || frame.height != camera.sensorHeightPx ||

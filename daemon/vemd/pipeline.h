@@ -69,6 +69,13 @@ class Pipeline {
   // call; `captured` must outlive the use of the result (it is borrowed).
   [[nodiscard]] const ProcessedFrame& process(const CapturedFrame& captured);
 
+  // Changes the options between frames, resetting only what changed: the light count and the
+  // sampler take effect with the next frame; another filter preset starts a new filter (its
+  // history is gone, so the next frames publish unfiltered lights until it fills); clustering
+  // follows its new parameters; another map size rebuilds the polar remap. Fails, changing
+  // nothing, with processingOptionsProblem's sentence.
+  [[nodiscard]] std::expected<void, std::string> reconfigure(const ProcessingOptions& options);
+
   [[nodiscard]] const calib::CameraCalibration& calibration() const { return calibration_; }
   [[nodiscard]] const ProcessingOptions& options() const { return options_; }
   [[nodiscard]] double filterDelayFrames() const { return filter_.delayFrames(); }

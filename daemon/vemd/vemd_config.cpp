@@ -1,7 +1,10 @@
 #include "vemd/vemd_config.h"
 
+#include <arpa/inet.h>
+
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -39,7 +42,8 @@ constexpr const char* kRateExpected =
 
 // The keys of each section, in the order config/vemd.toml documents them.
 constexpr std::string_view kTopKeys[] = {"version", "source",     "camera", "bracketing",
-                                         "processing", "filter", "clustering", "output", "stats"};
+                                         "processing", "filter", "clustering", "output", "stats",
+                                         "stream"};
 constexpr std::string_view kSourceKeys[] = {
     "spec",         "rate",   "loop",       "frames", "queue_depth", "retry_initial_ms",
     "retry_max_ms", "camera", "noise_code", "seed"};
@@ -55,6 +59,11 @@ constexpr std::string_view kOutputKeys[] = {
     "dir",          "jsonl", "record", "record_sync_every", "preview_every", "preview_numbered",
     "preview_scale"};
 constexpr std::string_view kStatsKeys[] = {"every_s"};
+constexpr std::string_view kStreamKeys[] = {
+    "enabled",   "listen",      "token",           "token_file",        "tls_cert",
+    "tls_key",   "max_clients", "send_timeout_ms", "cubemap_zstd_level", "record_dir"};
+constexpr const char* kListenExpected =
+    "\"IPV4:PORT\" or \"[IPV6]:PORT\" (an IP address, port 0 to 65535), or \"\" (no server)";
 
 const std::vector<std::string_view> kSamplerNames{"havran", "standard"};
 constexpr SamplerKind kSamplers[] = {SamplerKind::Havran, SamplerKind::Standard};
@@ -150,6 +159,37 @@ void readStats(TomlSectionReader r, StatsConfig& s) {
   r.number("every_s", 0.0, kMaxStatsEveryS, s.everyS);
 }
 
+void readStream(TomlSectionReader r, StreamConfig& s) {
+  r.onlyKeys(kStreamKeys);
+  r.boolean("enabled", s.enabled);
+  r.text("listen", s.listen);
+  if (!s.listen.empty() && !parseListenAddress(s.listen)) {
+    r.fail("listen", kListenExpected, "the string \"" + s.listen + "\"");
+  }
+  r.text("token", s.token);
+  r.text("token_file", s.tokenFile);
+  r.text("tls_cert", s.tlsCert);
+  r.text("tls_key", s.tlsKey);
+  if (s.tlsCert.empty() != s.tlsKey.empty()) {
+    r.fail(s.tlsCert.empty() ? "tls_cert" : "tls_key",
+           "both stream.tls_cert and stream.tls_key (PEM files), or neither", "only one");
+  }
+  r.wholeNumber("max_clients", 1, 4096, s.maxClients);
+  r.wholeNumber("send_timeout_ms", 100, 600'000, s.sendTimeoutMs);
+  r.wholeNumber("cubemap_zstd_level", 1, 19, s.cubemapZstdLevel);
+  r.text("record_dir", s.recordDir);
+  if (!s.token.empty() && !s.tokenFile.empty()) {
+    r.fail("token_file", "stream.token or stream.token_file, not both", "both");
+  }
+  const auto address = parseListenAddress(s.listen);
+  if (s.enabled && address && !address->loopback && s.token.empty() && s.tokenFile.empty()) {
+    r.fail("listen",
+           "a loopback address (127.0.0.1, [::1]) unless stream.token or stream.token_file is "
+           "set: listening beyond loopback needs a token",
+           "the string \"" + s.listen + "\"");
+  }
+}
+
 // The section `name` of the document, or an empty table when it is absent; a failure when it is
 // not a table.
 const toml::table& section(const toml::table& document, std::string_view name,
@@ -204,7 +244,7 @@ CLI::Validator rateCheck() {
 }
 
 struct Flags {
-  std::optional<std::string> config, source, rate, out, record, jsonl, camera;
+  std::optional<std::string> config, source, rate, out, record, jsonl, camera, streamListen;
   std::optional<std::uint64_t> frames;
   std::optional<std::size_t> lights;
   std::optional<int> cluster;
@@ -247,6 +287,15 @@ void addFlags(CLI::App& app, Flags& f) {
   app.add_option("--preview-every", f.previewEvery, "Write preview.png every N frames (0: off)")
       ->type_name("N")
       ->check(wholeNumberCheck(0, kMaxEvery));
+  app.add_option("--stream-listen", f.streamListen,
+                 "Stream to render clients on IP:PORT (\"\": no server; default 127.0.0.1:8765)")
+      ->type_name("ADDR")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            if (text.empty() || parseListenAddress(text)) return {};
+            return fmt::format("expected {}, found {}", kListenExpected, text);
+          },
+          ""));
   app.add_flag("--preview-numbered", f.previewNumbered,
                "Also keep every preview as preview-SEQ.png");
   app.add_option("--stats-every", f.statsEvery, "A statistics line every S seconds (0: at exit)")
@@ -272,6 +321,19 @@ void applyFlags(const Flags& f, VemdConfig& c) {
   if (f.previewEvery) c.output.previewEvery = *f.previewEvery;
   if (f.previewNumbered) c.output.previewNumbered = true;
   if (f.statsEvery) c.stats.everyS = *f.statsEvery;
+  if (f.streamListen) c.stream.listen = *f.streamListen;
+}
+
+// The flags may move the listener beyond loopback: the file's rule again.
+std::optional<std::string> streamProblem(const StreamConfig& s) {
+  const auto address = parseListenAddress(s.listen);
+  if (s.enabled && address && !address->loopback && s.token.empty() && s.tokenFile.empty()) {
+    return fmt::format(
+        "--stream-listen: {} is beyond loopback, which needs stream.token or stream.token_file "
+        "in the configuration",
+        s.listen);
+  }
+  return std::nullopt;
 }
 
 constexpr const char* kFooter =
@@ -286,6 +348,36 @@ constexpr const char* kFooter =
 
 }  // namespace
 
+std::optional<ListenAddress> parseListenAddress(const std::string& text) {
+  const std::size_t colon = text.rfind(':');
+  if (colon == std::string::npos || colon == 0) return std::nullopt;
+  std::string host = text.substr(0, colon);
+  const std::string portText = text.substr(colon + 1);
+  std::uint32_t port = 0;
+  const auto [end, ec] =
+      std::from_chars(portText.data(), portText.data() + portText.size(), port);
+  if (portText.empty() || ec != std::errc() || end != portText.data() + portText.size() ||
+      port > 65535) {
+    return std::nullopt;
+  }
+  ListenAddress address;
+  address.port = std::uint16_t(port);
+  if (host.front() == '[') {
+    if (host.size() < 3 || host.back() != ']') return std::nullopt;
+    host = host.substr(1, host.size() - 2);
+    in6_addr v6{};
+    if (::inet_pton(AF_INET6, host.c_str(), &v6) != 1) return std::nullopt;
+    static const in6_addr kLoopback6 = IN6ADDR_LOOPBACK_INIT;
+    address.loopback = std::memcmp(&v6, &kLoopback6, sizeof v6) == 0;
+  } else {
+    in_addr v4{};
+    if (::inet_pton(AF_INET, host.c_str(), &v4) != 1) return std::nullopt;
+    address.loopback = (ntohl(v4.s_addr) >> 24) == 127;
+  }
+  address.host = std::move(host);
+  return address;
+}
+
 const std::vector<ConfigSection>& configSchema() {
   static const std::vector<ConfigSection> schema = [] {
     const auto list = [](std::span<const std::string_view> keys) {
@@ -299,7 +391,8 @@ const std::vector<ConfigSection>& configSchema() {
                                       {"filter", list(kFilterKeys)},
                                       {"clustering", list(kClusteringKeys)},
                                       {"output", list(kOutputKeys)},
-                                      {"stats", list(kStatsKeys)}};
+                                      {"stats", list(kStatsKeys)},
+                                      {"stream", list(kStreamKeys)}};
   }();
   return schema;
 }
@@ -328,6 +421,7 @@ std::expected<VemdConfig, std::string> parseConfig(const std::string& text,
   readClustering({section(document, "clustering", top), "clustering", status}, config.processing);
   readOutput({section(document, "output", top), "output", status}, config.output);
   readStats({section(document, "stats", top), "stats", status}, config.stats);
+  readStream({section(document, "stream", top), "stream", status}, config.stream);
   if (!status.ok()) return std::unexpected(*status.failure);
   return config;
 }
@@ -371,6 +465,9 @@ std::expected<VemdConfig, CommandLineExit> parseCommandLine(const std::vector<st
     config = std::move(*loaded);
   }
   applyFlags(flags, config);
+  if (auto problem = streamProblem(config.stream)) {
+    return std::unexpected(CommandLineExit{2, "", *problem + "\n"});
+  }
   return config;
 }
 

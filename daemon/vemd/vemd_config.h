@@ -2,13 +2,13 @@
 // its default) and the command line, which overrides the file.
 //
 // File: TOML, sections [source], [camera], [bracketing], [processing], [filter], [clustering],
-// [output], [stats]; every
+// [output], [stats], [stream]; every
 // key is optional (the built-in default applies), a key or section that is not listed is refused,
 // and so is a value of the wrong type or out of range, in one sentence:
 //   "vemd.toml: processing.lights: expected a whole number from 1 to 65536, found 0".
 // Flags: --config FILE, --source SPEC, --frames N, --rate recorded|max|HZ, --loop, --lights N,
 // --cluster Q (0: off), --out DIR, --record FILE, --jsonl FILE, --preview-every N (0: off),
-// --stats-every S, --camera FILE, --list-devices; a bad flag value is refused the same way ("--lights: expected ...").
+// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR; a bad flag value is refused the same way ("--lights: expected ...").
 //
 // Units are in the key names: ..._ms milliseconds, ..._s seconds, rate in frames per second.
 #pragma once
@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <expected>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,32 @@ struct StatsConfig {
   friend bool operator==(const StatsConfig&, const StatsConfig&) = default;
 };
 
+// [stream]: the WebSocket server for render clients (daemon/stream/stream_server.h,
+// docs/protocol.md). Listening beyond loopback needs a token (checked when the file is read).
+struct StreamConfig {
+  bool enabled = true;
+  std::string listen = "127.0.0.1:8765";  // "IPV4:PORT" or "[IPV6]:PORT"; port 0: any; "": off
+  std::string token;      // the bearer token; "": none (or token_file)
+  std::string tokenFile;  // a file holding the token; must not be readable by group or others
+  std::string tlsCert;    // PEM certificate chain: wss:// (with tls_key)
+  std::string tlsKey;     // PEM private key
+  std::int64_t maxClients = 64;
+  std::int64_t sendTimeoutMs = 10'000;  // a send pending longer closes that client
+  std::int64_t cubemapZstdLevel = 3;
+  std::string recordDir;  // where control's start_recording writes; "": output.record's folder
+                          // (when it is one), else output.dir
+  friend bool operator==(const StreamConfig&, const StreamConfig&) = default;
+};
+
+// A parsed [stream] listen value.
+struct ListenAddress {
+  std::string host;  // the IP address without brackets
+  std::uint16_t port = 0;
+  bool loopback = false;  // 127.0.0.0/8 or ::1
+};
+// "127.0.0.1:8765", "[::1]:0", "0.0.0.0:8765"; nullopt when not of that form.
+[[nodiscard]] std::optional<ListenAddress> parseListenAddress(const std::string& text);
+
 struct VemdConfig {
   SourceConfig source;
   CameraConfig camera;
@@ -85,6 +112,7 @@ struct VemdConfig {
   ProcessingOptions processing;  // [processing], [filter] and [clustering]
   OutputConfig output;
   StatsConfig stats;
+  StreamConfig stream;
   bool listDevices = false;  // --list-devices (command line only): list the cameras and exit
   friend bool operator==(const VemdConfig&, const VemdConfig&) = default;
 };

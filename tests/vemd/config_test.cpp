@@ -96,7 +96,7 @@ TEST(VemdConfig, MisspeltSectionIsRefused) {
   EXPECT_EQ(refusal("[proccessing]\nlights = 64\n"),
             "vemd.toml: proccessing: unknown section (expected one of: version, source, camera, "
             "bracketing, "
-            "processing, filter, clustering, output, stats)");
+            "processing, filter, clustering, output, stats, stream)");
 }
 
 TEST(VemdConfig, OutOfRangeValueIsRefusedWithExpectedAndFound) {

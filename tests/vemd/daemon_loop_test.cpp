@@ -2,9 +2,12 @@
 // up capture; failing sinks and sources; stop requests; frame limits. Built with TSan in CI.
 #include "vemd/daemon_loop.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -189,6 +192,37 @@ TEST(DaemonLoop, SourceErrorsAreRetriedAndCountedUntilFramesFlowAgain) {
   EXPECT_EQ(result.reason, vemd::StopReason::EndOfStream);
   EXPECT_EQ(result.totals.sourceErrors, 5u);
   EXPECT_EQ(result.totals.processed, 6u);
+}
+
+// The loop tells its control why no frames come (the stream's Status): a lost camera shows as
+// NoDevice while the capture thread retries, and the failure clears once frames flow again.
+TEST(DaemonLoop, ControlSeesTheCameraGoneWhileRetryingAndBackWhenFramesFlow) {
+  class StateLog final : public vemd::LoopControl {
+   public:
+    void betweenFrames(vemd::Pipeline&, const vemd::LoopCounters& counters) override {
+      if (seen.empty() || seen.back() != counters.sourceFailure) seen.push_back(counters.sourceFailure);
+    }
+    std::vector<std::optional<SourceErrorCause>> seen;
+  };
+  std::vector<ScriptedSource::Step> script = ScriptedSource::frames(2);
+  for (int i = 0; i < 100; ++i) {  // 100 attempts at the 4 ms backoff: several polls of the loop
+    script.push_back({SourceError{SourceErrorCause::NoDevice, "camera gone"}});
+  }
+  for (int i = 0; i < 30; ++i) script.push_back({});
+  ScriptedSource source(script, false);
+  SinkUnderTest s;
+  vemd::SinkSet sinks = sinksWith(s);
+  vemd::Pipeline pipeline = smallPipeline();
+  std::atomic<bool> stop{false};
+  StateLog control;
+  const vemd::LoopResult result =
+      vemd::runDaemonLoop(source, pipeline, sinks, quietLoop(8), stop, nullptr, &control);
+  EXPECT_EQ(result.totals.sourceErrors, 100u);
+  const auto noDevice = std::find(control.seen.begin(), control.seen.end(),
+                                  std::optional<SourceErrorCause>(SourceErrorCause::NoDevice));
+  ASSERT_NE(noDevice, control.seen.end()) << "the control never saw the camera gone";
+  EXPECT_NE(std::find(noDevice, control.seen.end(), std::nullopt), control.seen.end())
+      << "the failure did not clear when frames flowed again";
 }
 
 // A stop request ends a source that never ends: the loop wakes the capture thread out of next(),

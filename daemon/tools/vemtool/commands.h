@@ -14,5 +14,6 @@ void addRecoverCommand(CLI::App& app, int& exitCode);  // recover_command.cpp
 void addSynthCommand(CLI::App& app, int& exitCode);    // synth_command.cpp
 void addExportCommand(CLI::App& app, int& exitCode);   // export_command.cpp
 void addImportCommand(CLI::App& app, int& exitCode);   // import_command.cpp
+void addSubscribeCommand(CLI::App& app, int& exitCode);  // subscribe_command.cpp
 
 }  // namespace vem::tool

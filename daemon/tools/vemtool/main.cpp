@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   vem::tool::addSynthCommand(app, exitCode);
   vem::tool::addExportCommand(app, exitCode);
   vem::tool::addImportCommand(app, exitCode);
+  vem::tool::addSubscribeCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,60 @@
+// The server's view of one WebSocket connection and of the server a session reports to
+// (stream_server.h's internals; used only by stream_server.cpp and websocket_session.h).
+// Everything here lives on the server's io thread.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "stream/client_message_handler.h"
+#include "stream/outbox.h"
+#include "stream/stream_server.h"
+#include "stream/subscription.h"
+
+namespace vem::stream {
+
+class Connection {
+ public:
+  Connection(std::uint64_t id, bool controlAllowed, std::string peer)
+      : id_(id), controlAllowed_(controlAllowed), peer_(std::move(peer)) {}
+  virtual ~Connection() = default;
+  Connection(const Connection&) = delete;
+  Connection& operator=(const Connection&) = delete;
+
+  // Writes what the outbox holds, when no write is pending.
+  virtual void wake() = 0;
+  // Sends a close frame with `code` and `reason` (after the write in flight), then ends.
+  virtual void closeWith(std::uint16_t code, std::string reason) = 0;
+
+  [[nodiscard]] std::uint64_t id() const { return id_; }
+  [[nodiscard]] bool controlAllowed() const { return controlAllowed_; }
+  [[nodiscard]] const std::string& peer() const { return peer_; }
+
+  Outbox outbox;
+  Subscription subscription;
+  std::chrono::steady_clock::time_point lastEnvironment{};
+  bool open = false;  // the WebSocket handshake completed
+
+ private:
+  std::uint64_t id_;
+  bool controlAllowed_;
+  std::string peer_;
+};
+
+// What a session tells the server; implemented by StreamServer::Impl.
+class SessionHost {
+ public:
+  [[nodiscard]] virtual const StreamServerOptions& options() const = 0;
+  // The WebSocket handshake completed.
+  virtual void opened(Connection& connection) = 0;
+  // The connection ended (`why`: one phrase for the log); called once.
+  virtual void ended(Connection& connection, const std::string& why) = 0;
+  virtual void received(Connection& connection, ClientAction action) = 0;
+
+ protected:
+  ~SessionHost() = default;
+};
+
+}  // namespace vem::stream

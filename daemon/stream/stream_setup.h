@@ -1,0 +1,49 @@
+// Streaming setup: from vemd's [stream] configuration (vemd_config.h) to a listening StreamServer,
+// the StreamSink and RecordingSwitch that join vemd's sinks, and the StreamControl the loop calls
+// between frames.
+//
+// Refused at start, in one sentence: a token file that cannot be read, is empty, or is readable by
+// group or others; TLS files that do not load. A port that cannot be bound is not fatal: vemd logs
+// it and runs without streaming (degrade, don't die). Disabled ([stream] enabled = false or
+// listen = ""): nothing is started.
+#pragma once
+
+#include <expected>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "stream/stream_control.h"
+#include "stream/stream_server.h"
+#include "vemd/frame_source.h"
+#include "vemd/sink.h"
+#include "vemd/vemd_config.h"
+
+namespace vem::stream {
+
+// The token in `path` (surrounding white space removed), or why it cannot be used.
+[[nodiscard]] std::expected<std::string, std::string> readTokenFile(
+    const std::filesystem::path& path);
+
+// "MODEL SERIAL #hash" of the source's camera file (FNV-1a 64 of its text), "none" without one.
+[[nodiscard]] std::string calibrationId(const vemd::SourceDescription& source);
+
+[[nodiscard]] std::expected<StreamServerOptions, std::string> serverOptions(
+    const vemd::StreamConfig& config, const vemd::SourceDescription& source);
+
+// Where control's start_recording writes (see vemd_config.h, StreamConfig::recordDir).
+[[nodiscard]] std::filesystem::path controlRecordingFolder(const vemd::VemdConfig& config);
+
+struct Streaming {
+  std::unique_ptr<StreamServer> server;    // null: streaming is off
+  std::unique_ptr<StreamControl> control;  // null with it
+};
+
+// Starts the server and appends its sinks to `sinks`; an empty Streaming when disabled or when
+// the port cannot be bound (logged).
+[[nodiscard]] std::expected<Streaming, std::string> startStreaming(
+    const vemd::VemdConfig& config, const vemd::SourceDescription& source,
+    std::vector<std::unique_ptr<vemd::Sink>>& sinks);
+
+}  // namespace vem::stream

@@ -1,0 +1,90 @@
+#include "stream/stream_sink.h"
+
+#include <algorithm>
+#include <cassert>
+#include <memory>
+#include <optional>
+#include <utility>
+
+#include "core/cube_map.h"
+#include "stream/frame_encoding.h"
+#include "vemd/frame_source.h"
+#include "vemd/sinks/published_lights.h"
+
+namespace vem::stream {
+
+namespace {
+
+constexpr std::size_t kMaxWindowSamples = 4096;
+
+SharedBytes shared(ServerMessage message) {
+  return std::make_shared<const std::string>(serialize(std::move(message)));
+}
+
+}  // namespace
+
+StreamSink::StreamSink(StreamServer& server, StreamSinkOptions options)
+    : server_(server), options_(options), windowStartNs_(vemd::monotonicNowNs()) {}
+
+std::expected<void, vemd::SinkFailure> StreamSink::consume(const vemd::ProcessedFrame& frame) {
+  assert(frame.captured != nullptr);
+  const std::int64_t nowNs = vemd::monotonicNowNs();
+  const std::int64_t nowUnixNs = unixNowNs();
+  LightFrameStamp stamp;
+  stamp.captureUnixNs = nowUnixNs - (nowNs - frame.captured->arrivalNs);
+  stamp.publishUnixNs = nowUnixNs;
+  stamp.status = SOURCE_STATE_OK;
+  stamp.filterDelayFrames = stamp_.filterDelayFrames;
+  stamp.clusterRadiusRad = stamp_.clusterRadiusRad;
+  server_.publishLights(shared(lightFrameMessage(frame, stamp)));
+  ++framesPublished_;
+  ++windowFrames_;
+  lightsInLastFrame_ = std::uint32_t(vemd::publishedLights(frame).lights->lights.size());
+  if (windowLatenciesMs_.size() < kMaxWindowSamples) {
+    windowLatenciesMs_.push_back(double(vemd::monotonicNowNs() - frame.captured->arrivalNs) * 1e-6);
+  }
+  publishCubemaps(frame, nowNs);
+  return {};
+}
+
+void StreamSink::publishCubemaps(const vemd::ProcessedFrame& frame, std::int64_t nowNs) {
+  const CubemapDemand demand = server_.cubemapDemand();
+  std::erase_if(nextCubemapDueNs_, [&](const auto& entry) {
+    return std::ranges::find(demand.variants, entry.first, &VariantDemand::variant) ==
+           demand.variants.end();
+  });
+  if (frame.polar == nullptr) return;
+  std::optional<CubeMap> cube;  // shared by variants that differ only in the preview
+  CubeVariant built{};
+  for (const VariantDemand& wanted : demand.variants) {
+    auto [due, fresh] = nextCubemapDueNs_.try_emplace(wanted.variant, nowNs);
+    if (nowNs < due->second) continue;
+    due->second = std::max(due->second + std::int64_t(1e9 / wanted.rateHz), nowNs);
+    if (!cube || built.facePx != wanted.variant.facePx || built.levels != wanted.variant.levels) {
+      cube = cubeMapFromEnvMap(*frame.polar, wanted.variant.facePx, wanted.variant.levels);
+      built = wanted.variant;
+      ++cubemapsBuilt_;
+    }
+    ServerMessage message = environmentFrameMessage(*cube, frame.captured->seq,
+                                                    frame.captured->captureTsNs, unixNowNs(),
+                                                    options_.zstdLevel);
+    if (wanted.variant.preview) attachPolarPreview(message, *frame.polar, options_.previewWidthPx);
+    server_.publishEnvironment(wanted.variant, shared(std::move(message)));
+  }
+}
+
+SinkWindow StreamSink::takeWindow(std::int64_t nowMonotonicNs) {
+  SinkWindow window;
+  window.frames = std::exchange(windowFrames_, 0);
+  window.elapsedS = double(nowMonotonicNs - windowStartNs_) * 1e-9;
+  if (!windowLatenciesMs_.empty()) {
+    auto middle = windowLatenciesMs_.begin() + std::ptrdiff_t(windowLatenciesMs_.size() / 2);
+    std::nth_element(windowLatenciesMs_.begin(), middle, windowLatenciesMs_.end());
+    window.latencyMedianMs = *middle;
+  }
+  windowLatenciesMs_.clear();
+  windowStartNs_ = nowMonotonicNs;
+  return window;
+}
+
+}  // namespace vem::stream

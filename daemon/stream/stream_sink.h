@@ -1,0 +1,75 @@
+// StreamSink: vemd's processed frames to the stream server (stream_server.h), on the processing
+// thread like every sink (vemd/sink.h).
+//
+// - Per frame, the light frame message is built and serialized once (frame_encoding.h: exactly
+//   the lights the JSON-lines sink writes) and handed to the server, which never waits for a
+//   client.
+// - Cube maps are built only while some client subscribed to them: per distinct variant (face
+//   size, levels, preview) at the highest rate asked for it, from the frame's polar map
+//   (core/cube_map.h), with the polar preview when asked.
+// - consume() never fails (a network client cannot fail vemd), so the sink set never drops it and
+//   StreamControl may keep borrowing it.
+// Times: *UnixNs on CLOCK_REALTIME, latency and due times on CLOCK_MONOTONIC.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "stream/stream_server.h"
+#include "stream/subscription.h"
+#include "vemd/sink.h"
+
+namespace vem::stream {
+
+struct StreamSinkOptions {
+  int zstdLevel = 3;
+  int previewWidthPx = 256;
+};
+
+// What the sink needs from the pipeline, refreshed between frames (stream_control.h).
+struct ProcessingStamp {
+  double filterDelayFrames = 0.0;
+  double clusterRadiusRad = 0.0;  // 0: clustering off
+};
+
+// Frames and latency since the last takeWindow().
+struct SinkWindow {
+  std::uint64_t frames = 0;
+  double elapsedS = 0.0;
+  double latencyMedianMs = 0.0;  // arrival in vemd to the light frame handed to the server
+};
+
+class StreamSink final : public vemd::Sink {
+ public:
+  StreamSink(StreamServer& server, StreamSinkOptions options);
+
+  [[nodiscard]] std::string name() const override { return "stream"; }
+  [[nodiscard]] std::expected<void, vemd::SinkFailure> consume(
+      const vemd::ProcessedFrame& frame) override;
+  [[nodiscard]] std::expected<void, vemd::SinkFailure> close() override { return {}; }
+
+  void setStamp(const ProcessingStamp& stamp) { stamp_ = stamp; }
+  [[nodiscard]] SinkWindow takeWindow(std::int64_t nowMonotonicNs);
+
+  [[nodiscard]] std::uint64_t framesPublished() const { return framesPublished_; }
+  [[nodiscard]] std::uint64_t cubemapsBuilt() const { return cubemapsBuilt_; }
+  [[nodiscard]] std::uint32_t lightsInLastFrame() const { return lightsInLastFrame_; }
+
+ private:
+  void publishCubemaps(const vemd::ProcessedFrame& frame, std::int64_t nowNs);
+
+  StreamServer& server_;
+  StreamSinkOptions options_;
+  ProcessingStamp stamp_;
+  std::map<CubeVariant, std::int64_t> nextCubemapDueNs_;
+  std::vector<double> windowLatenciesMs_;
+  std::int64_t windowStartNs_ = 0;
+  std::uint64_t windowFrames_ = 0;
+  std::uint64_t framesPublished_ = 0;
+  std::uint64_t cubemapsBuilt_ = 0;
+  std::uint32_t lightsInLastFrame_ = 0;
+};
+
+}  // namespace vem::stream

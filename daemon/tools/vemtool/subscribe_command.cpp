@@ -1,0 +1,203 @@
+// `vemtool subscribe ws://HOST:PORT`: receives a vemd stream (client/stream_client.h) and prints
+// each light frame as one JSON line (the `vemtool lights` light objects), each cube map as one line,
+// and the reception statistics as a final JSON line on stderr.
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "client/stream_client.h"
+#include "commands.h"
+#include "light_json.h"
+#include "proto/stream_protocol.h"
+
+namespace vem::tool {
+namespace {
+
+using namespace std::chrono_literals;
+
+struct SubscribeOptions {
+  std::string url;
+  std::string token;
+  std::string tokenFile;
+  std::set<std::string> what{"lights"};
+  double cubemapRateHz = 1.0;
+  std::uint64_t frames = 0;   // 0: until interrupted or the timeout
+  double timeoutS = 0.0;      // 0: none
+  std::string caFile;
+};
+
+std::atomic<bool> interrupted{false};
+
+double roundedMs(double ms) { return std::round(ms * 1000.0) / 1000.0; }
+
+nlohmann::ordered_json lightFrameJson(const client::Received<client::LightFrame>& received) {
+  const client::LightFrame& frame = received.frame;
+  nlohmann::ordered_json lights = frameJson(frame.lights, frame.seq);
+  return {{"seq", frame.seq},
+          {"lights_seq", frame.lightsSeq},
+          {"capture_ts_ns", frame.captureTsNs},
+          {"latency_ms", roundedMs(double(received.receivedUnixNs - frame.publishUnixNs) * 1e-6)},
+          {"count", lights["count"]},
+          {"lights", std::move(lights["lights"])}};
+}
+
+nlohmann::ordered_json cubemapJson(const client::EnvironmentFrame& frame) {
+  return {{"cubemap",
+           {{"seq", frame.seq},
+            {"face_px", frame.cube.levels.empty() ? 0 : frame.cube.levels[0].facePx},
+            {"levels", frame.cube.levels.size()},
+            {"bytes", frame.compressedBytes}}}};
+}
+
+nlohmann::ordered_json statsJson(const client::ClientStats& stats) {
+  return {{"received", stats.received},
+          {"skipped", stats.skipped},
+          {"cubemaps", stats.environmentFrames},
+          {"decode_errors", stats.decodeErrors},
+          {"reconnects", stats.reconnects},
+          {"latency_median_ms", roundedMs(stats.latency.medianMs)},
+          {"latency_p99_ms", roundedMs(stats.latency.p99Ms)}};
+}
+
+// The token from --token or the first line of --token-file (surrounding blanks dropped).
+bool readToken(SubscribeOptions& o) {
+  if (o.tokenFile.empty()) return true;
+  std::ifstream in(o.tokenFile);
+  std::getline(in, o.token);
+  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+  while (!o.token.empty() && blank(o.token.back())) o.token.pop_back();
+  while (!o.token.empty() && blank(o.token.front())) o.token.erase(0, 1);
+  if (!in.bad() && !o.token.empty()) return true;
+  spdlog::error("{}: cannot read a token from its first line", o.tokenFile);
+  return false;
+}
+
+// Prints the frames as they arrive (on the client's I/O thread) and counts them.
+class FramePrinter {
+ public:
+  explicit FramePrinter(std::uint64_t wanted, bool countCubemaps)
+      : wanted_(wanted), countCubemaps_(countCubemaps) {}
+
+  void light(const client::Received<client::LightFrame>& received) {
+    print(lightFrameJson(received), !countCubemaps_);
+  }
+  void cubemap(const client::EnvironmentFrame& frame) { print(cubemapJson(frame), countCubemaps_); }
+
+  // Waits for the wanted frames, the client's refusal, an interrupt or the deadline.
+  bool waitDone(const client::StreamClient& client, std::chrono::steady_clock::time_point deadline) {
+    std::unique_lock lock(mutex_);
+    while (!(wanted_ > 0 && printed_ >= wanted_)) {
+      if (interrupted || client.state() == client::ConnectionState::Refused) return false;
+      if (std::chrono::steady_clock::now() >= deadline) return false;
+      done_.wait_for(lock, 100ms);
+    }
+    return true;
+  }
+  std::uint64_t printed() const {
+    std::lock_guard lock(mutex_);
+    return printed_;
+  }
+
+ private:
+  void print(const nlohmann::ordered_json& line, bool counts) {
+    std::lock_guard lock(mutex_);
+    if (wanted_ > 0 && printed_ >= wanted_) return;  // exactly N lines of what was counted
+    std::cout << line.dump() << '\n' << std::flush;
+    if (counts && ++printed_ == wanted_) done_.notify_all();
+  }
+
+  std::uint64_t wanted_;
+  bool countCubemaps_;
+  mutable std::mutex mutex_;
+  std::condition_variable done_;
+  std::uint64_t printed_ = 0;
+};
+
+int runSubscribe(SubscribeOptions o) {
+  if (!readToken(o)) return EXIT_FAILURE;
+  const bool lights = o.what.contains("lights");
+  const bool cubemaps = o.what.contains("cubemap");
+  FramePrinter printer(o.frames, cubemaps && !lights);
+  client::StreamClientOptions options;
+  options.url = o.url;
+  options.token = o.token;
+  options.caFile = o.caFile;
+  options.subscription.lights = lights;
+  options.subscription.cubemapRateHz = cubemaps ? o.cubemapRateHz : 0.0;
+  if (lights) options.onLightFrame = [&printer](const auto& r) { printer.light(r); };
+  if (cubemaps) options.onEnvironmentFrame = [&printer](const auto& r) { printer.cubemap(r.frame); };
+  auto client = client::StreamClient::start(std::move(options));
+  if (!client) {
+    spdlog::error("{}", client.error());
+    return EXIT_FAILURE;
+  }
+  std::signal(SIGINT, [](int) { interrupted = true; });
+  std::signal(SIGTERM, [](int) { interrupted = true; });
+  const auto deadline = o.timeoutS > 0.0
+                            ? std::chrono::steady_clock::now() +
+                                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(o.timeoutS))
+                            : std::chrono::steady_clock::time_point::max();
+  const bool done = printer.waitDone(**client, deadline);
+  const client::ConnectionState state = (*client)->state();
+  const std::string reason = (*client)->stateReason();
+  (*client)->stop();
+  std::cerr << statsJson((*client)->stats()).dump() << '\n';
+  if (done || interrupted) return EXIT_SUCCESS;
+  if (state == client::ConnectionState::Refused) return EXIT_FAILURE;  // the client logged why
+  if (o.frames == 0) return EXIT_SUCCESS;  // --timeout alone: ran for that long
+  spdlog::error("timed out after {} s with {} of {} {} from {}{}", o.timeoutS, printer.printed(),
+                o.frames, lights ? "light frames" : "cube maps", o.url,
+                reason.empty() ? "" : " (last: " + reason + ")");
+  return EXIT_FAILURE;
+}
+
+}  // namespace
+
+void addSubscribeCommand(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<SubscribeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "subscribe", "Receive a vemd stream and print its frames as JSON lines (client/)");
+  cmd->footer(
+      "Example:\n  vemtool subscribe ws://127.0.0.1:8490 --frames 10\n"
+      "Prints one line per light frame:\n"
+      "  {\"seq\":S,\"lights_seq\":L,\"capture_ts_ns\":T,\"latency_ms\":M,\"count\":N,"
+      "\"lights\":[{\"id\":K,\"dir\":[x,y,z],\"rgb\":[r,g,b]},...]}\n"
+      "one line per cube map, {\"cubemap\":{\"seq\":S,\"face_px\":F,\"levels\":L,\"bytes\":B}},\n"
+      "and on exit the statistics on stderr: {\"received\":..,\"skipped\":..,...}.\n"
+      "Exits 0 after N frames (light frames, or cube maps with --what cubemap), 1 on a timeout\n"
+      "or when the daemon refuses the client.");
+  cmd->add_option("url", options->url, "ws://HOST:PORT[/PATH] or wss://...")->required();
+  auto* token = cmd->add_option("--token", options->token, "The daemon's bearer token");
+  cmd->add_option("--token-file", options->tokenFile, "A file whose first line is the token")
+      ->check(CLI::ExistingFile)
+      ->excludes(token);
+  cmd->add_option("--what", options->what, "lights, cubemap or lights,cubemap (default: lights)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"lights", "cubemap"}));
+  cmd->add_option("--cubemap-rate", options->cubemapRateHz, "Cube maps per second (default 1)")
+      ->check(CLI::Range(0.01, stream::kMaxCubemapRateHz));
+  cmd->add_option("--frames", options->frames, "Exit after N frames (default: never)");
+  cmd->add_option("--timeout", options->timeoutS,
+                  "Give up after S seconds (exit 1 when --frames were not all received)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--ca-file", options->caFile, "wss: trust the CA certificates of this PEM file")
+      ->check(CLI::ExistingFile);
+  cmd->callback([options, &exitCode] { exitCode = runSubscribe(*options); });
+}
+
+}  // namespace vem::tool
