@@ -1,0 +1,285 @@
+#include "bench/stream/stream_bench.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "client/stream_client.h"
+#include "stream_e2e/raw_ws_client.h"
+#include "stream_e2e/small_camera.h"
+#include "stream_e2e/vemd_process.h"
+
+namespace vem::bench {
+
+namespace {
+
+using namespace std::chrono_literals;
+using e2e::RawWsClient;
+using e2e::VemdProcess;
+
+constexpr auto kStartTimeout = 60s;
+
+// vemd and the scratch folder holding its camera file.
+struct RunningVemd {
+  std::filesystem::path dir;
+  std::unique_ptr<VemdProcess> process;
+  std::uint16_t port = 0;
+  ~RunningVemd() {
+    if (process) {
+      process->signal(SIGTERM);
+      (void)process->waitForExit(30s);  // else the destructor kills it
+    }
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+};
+
+std::expected<std::unique_ptr<RunningVemd>, std::string> startVemd(
+    const std::string& vemdPath, const std::string& rate, const std::vector<std::string>& extra) {
+  auto running = std::make_unique<RunningVemd>();
+  running->dir =
+      std::filesystem::temp_directory_path() / fmt::format("vem_stream_bench_{}", ::getpid());
+  std::filesystem::create_directories(running->dir);
+  const std::filesystem::path camera = running->dir / "camera.toml";
+  std::ofstream(camera) << e2e::smallCameraToml();
+  std::vector<std::string> args{
+      "--camera", camera.string(), "--source", "synthetic:sky",   "--rate",
+      rate,       "--stats-every", "0",        "--stream-listen", "127.0.0.1:0"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  auto spawned = VemdProcess::spawn(vemdPath, args);
+  if (!spawned) return std::unexpected(spawned.error());
+  running->process = std::move(*spawned);
+  const auto port = running->process->waitForPort(kStartTimeout);
+  if (!port) {
+    return std::unexpected("vemd did not start streaming: " + running->process->stderrText());
+  }
+  running->port = *port;
+  return running;
+}
+
+std::expected<std::unique_ptr<client::StreamClient>, std::string> startClient(
+    std::uint16_t port, client::StreamClientOptions options) {
+  options.url = fmt::format("ws://127.0.0.1:{}", port);
+  auto started = client::StreamClient::start(std::move(options));
+  if (!started) return std::unexpected(started.error());
+  if (!(*started)->waitForState(client::ConnectionState::Connected, kStartTimeout)) {
+    return std::unexpected("the StreamClient did not connect: " + (*started)->stateReason());
+  }
+  return std::move(*started);
+}
+
+// The median size of the next `count` messages of `bodyCase` (others skipped), within 30 s.
+std::expected<MessageSize, std::string> medianSize(RawWsClient& raw,
+                                                   stream::ServerMessage::BodyCase bodyCase,
+                                                   std::size_t count, std::string what,
+                                                   std::uint32_t* levels = nullptr) {
+  std::vector<double> sizes, rawBytes;
+  const auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (sizes.size() < count) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      return std::unexpected("too few messages for " + what);
+    }
+    const auto bytes = raw.readBytes(30s);
+    if (!bytes) return std::unexpected("the connection ended while measuring " + what);
+    stream::ServerMessage message;
+    if (!message.ParseFromString(*bytes) || message.body_case() != bodyCase) continue;
+    sizes.push_back(double(bytes->size()));
+    if (message.has_environment()) {
+      rawBytes.push_back(double(message.environment().raw_bytes()));
+      if (levels != nullptr) *levels = message.environment().levels();
+    }
+  }
+  return MessageSize{std::move(what), quantile(sizes, 0.5), quantile(rawBytes, 0.5)};
+}
+
+std::expected<MessageSize, std::string> lightFrameSize(const std::string& vemdPath,
+                                                       std::size_t lights, bool clustering) {
+  std::vector<std::string> extra{"--lights", std::to_string(lights)};
+  if (!clustering) extra.insert(extra.end(), {"--cluster", "0"});
+  auto vemd = startVemd(vemdPath, "30", extra);
+  if (!vemd) return std::unexpected(vemd.error());
+  RawWsClient raw;
+  if (raw.connect((*vemd)->port) != 0) return std::unexpected("no connection to vemd");
+  return medianSize(raw, stream::ServerMessage::kLights, 30,
+                    fmt::format("light frame, {} lights, {}", lights,
+                                clustering ? "clustered (Q = 72)" : "no clustering"));
+}
+
+// vemd's CPU time so far (user + system, all threads) in ms, from /proc/PID/stat; 0 if unreadable.
+double cpuTimeMs(pid_t pid) {
+  std::ifstream in(fmt::format("/proc/{}/stat", pid));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t afterName = text.rfind(')');
+  if (afterName == std::string::npos) return 0.0;
+  std::istringstream fields(text.substr(afterName + 2));
+  std::string field;
+  double ticks = 0.0;
+  for (int i = 3; i <= 15 && fields >> field; ++i) {  // fields 14 and 15: utime, stime
+    if (i >= 14) ticks += std::stod(field);
+  }
+  return ticks * 1000.0 / double(::sysconf(_SC_CLK_TCK));
+}
+
+}  // namespace
+
+double quantile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::ranges::sort(values);
+  const double at = q * double(values.size() - 1);
+  const auto lo = std::size_t(at);
+  const std::size_t hi = std::min(lo + 1, values.size() - 1);
+  return values[lo] + (at - double(lo)) * (values[hi] - values[lo]);
+}
+
+std::expected<LatencyResult, std::string> networkLatency(const std::string& vemdPath,
+                                                         std::size_t frames, double rateHz) {
+  auto vemd = startVemd(vemdPath, fmt::format("{}", rateHz), {});
+  if (!vemd) return std::unexpected(vemd.error());
+  std::mutex mutex;
+  std::vector<double> latenciesMs;
+  latenciesMs.reserve(frames);
+  client::StreamClientOptions options;
+  options.onLightFrame = [&](const client::Received<client::LightFrame>& received) {
+    std::lock_guard lock(mutex);
+    if (latenciesMs.size() < frames) {
+      latenciesMs.push_back(double(received.receivedUnixNs - received.frame.publishUnixNs) * 1e-6);
+    }
+  };
+  auto streamClient = startClient((*vemd)->port, std::move(options));
+  if (!streamClient) return std::unexpected(streamClient.error());
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration<double>(2.0 * double(frames) / rateHz + 30.0);
+  for (;;) {
+    std::this_thread::sleep_for(50ms);
+    std::lock_guard lock(mutex);
+    if (latenciesMs.size() >= frames) break;
+    if (std::chrono::steady_clock::now() > deadline) {
+      return std::unexpected(fmt::format("only {} light frames arrived", latenciesMs.size()));
+    }
+  }
+  const std::uint64_t skipped = (*streamClient)->stats().skipped;
+  (*streamClient)->stop();
+  std::lock_guard lock(mutex);
+  return LatencyResult{frames,
+                       rateHz,
+                       quantile(latenciesMs, 0.5),
+                       quantile(latenciesMs, 0.99),
+                       *std::ranges::max_element(latenciesMs),
+                       skipped};
+}
+
+std::expected<std::vector<MessageSize>, std::string> messageSizes(const std::string& vemdPath) {
+  std::vector<MessageSize> sizes;
+  for (const auto& [lights, clustering] : std::vector<std::pair<std::size_t, bool>>{
+           {64, true}, {256, true}, {256, false}, {1024, true}}) {
+    auto size = lightFrameSize(vemdPath, lights, clustering);
+    if (!size) return std::unexpected(size.error());
+    sizes.push_back(*size);
+  }
+  auto vemd = startVemd(vemdPath, "30", {});
+  if (!vemd) return std::unexpected(vemd.error());
+  RawWsClient raw;
+  if (raw.connect((*vemd)->port) != 0) return std::unexpected("no connection to vemd");
+  for (const std::uint32_t facePx : {64U, 128U}) {
+    for (const std::uint32_t levels : {1U, 8U}) {
+      stream::ClientMessage subscribe;
+      subscribe.mutable_subscribe()->set_lights(false);
+      subscribe.mutable_subscribe()->set_cubemap_rate_hz(10.0);
+      subscribe.mutable_subscribe()->set_cubemap_face_px(facePx);
+      subscribe.mutable_subscribe()->set_cubemap_levels(levels);
+      if (!raw.send(subscribe, 20s)) return std::unexpected("cannot subscribe to cube maps");
+      // The first environment frames may still be of the previous subscription: skip two.
+      (void)medianSize(raw, stream::ServerMessage::kEnvironment, 2, "");
+      std::uint32_t sentLevels = 0;
+      auto size = medianSize(raw, stream::ServerMessage::kEnvironment, 5, "cube map", &sentLevels);
+      if (!size) return std::unexpected(size.error());
+      size->what = fmt::format("cube map {} px, {} level{} (asked {})", facePx, sentLevels,
+                               sentLevels == 1 ? "" : "s", levels);
+      sizes.push_back(*size);
+    }
+  }
+  return sizes;
+}
+
+std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPath,
+                                                       std::size_t clients, double windowS) {
+  auto vemd = startVemd(vemdPath, "max", {});
+  if (!vemd) return std::unexpected(vemd.error());
+  std::atomic<bool> stop{false};
+  std::atomic<std::size_t> connected{0};
+  std::vector<std::thread> drains;
+  for (std::size_t i = 1; i < clients; ++i) {
+    drains.emplace_back([&, port = (*vemd)->port] {
+      RawWsClient raw;
+      if (raw.connect(port) != 0) return;
+      ++connected;
+      while (!stop.load() && raw.readBytes(5s)) {
+      }
+    });
+  }
+  auto streamClient = startClient((*vemd)->port, {});
+  const auto joinDrains = [&] {
+    stop = true;
+    for (std::thread& drain : drains) drain.join();
+  };
+  if (!streamClient) {
+    joinDrains();
+    return std::unexpected(streamClient.error());
+  }
+  const auto connectDeadline = std::chrono::steady_clock::now() + kStartTimeout;
+  while (connected.load() + 1 < clients && std::chrono::steady_clock::now() < connectDeadline) {
+    std::this_thread::sleep_for(50ms);
+  }
+  std::this_thread::sleep_for(2s);  // the Status window then covers every client
+  const auto startStatus = (*streamClient)->status();
+  const client::ClientStats startStats = (*streamClient)->stats();
+  const double startCpuMs = cpuTimeMs((*vemd)->process->pid());
+  std::vector<double> rates;
+  const auto windowStart = std::chrono::steady_clock::now();
+  const auto windowEnd = windowStart + std::chrono::duration<double>(windowS);
+  std::optional<std::uint64_t> lastStatusProcessed;
+  while (std::chrono::steady_clock::now() < windowEnd) {
+    std::this_thread::sleep_for(100ms);
+    const auto status = (*streamClient)->status();
+    if (status && status->framesProcessed != lastStatusProcessed) {
+      lastStatusProcessed = status->framesProcessed;
+      rates.push_back(status->frameRateHz);
+    }
+  }
+  const double elapsedS =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - windowStart).count();
+  const client::ClientStats endStats = (*streamClient)->stats();
+  const auto endStatus = (*streamClient)->status();
+  const double cpuMs = cpuTimeMs((*vemd)->process->pid()) - startCpuMs;
+  const std::size_t allConnected = connected.load() + 1;
+  (*streamClient)->stop();
+  joinDrains();
+  if (allConnected < clients) {
+    return std::unexpected(fmt::format("only {} of {} clients connected", allConnected, clients));
+  }
+  RateResult result;
+  result.clients = clients;
+  result.processedHz = quantile(rates, 0.5);
+  result.receivedHz = double(endStats.received - startStats.received) / elapsedS;
+  result.skipped = endStats.skipped - startStats.skipped;
+  if (startStatus && endStatus) {
+    result.dropped = endStatus->framesDropped - startStatus->framesDropped;
+    const std::uint64_t frames = endStatus->framesProcessed - startStatus->framesProcessed;
+    if (frames > 0) result.cpuMsPerFrame = cpuMs / double(frames);
+  }
+  return result;
+}
+
+}  // namespace vem::bench

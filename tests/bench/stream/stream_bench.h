@@ -1,0 +1,60 @@
+// The stream benchmark's measurements, each against the real vemd (VemdProcess, a synthetic sky
+// on 127.0.0.1 port 0) and real clients on loopback:
+// - networkLatency: publish_unix_ns (processing done) to receivedUnixNs (a StreamClient holding
+//   the decoded frame), both CLOCK_REALTIME, in ms;
+// - messageSizes: bytes of each serialized ServerMessage a raw client receives: light frames per
+//   light count, environment frames (cube maps) per face size and mip levels;
+// - rateWithClients: vemd's processed frame rate at --rate max (its Status) with N clients
+//   connected: one StreamClient that reads the Status plus N - 1 raw clients that read and
+//   discard every message, each on its own thread; and vemd's CPU time per processed frame
+//   (/proc/PID/stat), which shows what each client costs when the two cores are shared.
+// Each returns one sentence when vemd or a client does not come up.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <expected>
+#include <string>
+#include <vector>
+
+namespace vem::bench {
+
+struct LatencyResult {
+  std::size_t frames = 0;
+  double rateHz = 0.0;  // vemd's --rate
+  double medianMs = 0.0;
+  double p99Ms = 0.0;
+  double maxMs = 0.0;
+  std::uint64_t skipped = 0;  // seq gaps the client saw
+};
+
+[[nodiscard]] std::expected<LatencyResult, std::string> networkLatency(const std::string& vemdPath,
+                                                                       std::size_t frames,
+                                                                       double rateHz);
+
+struct MessageSize {
+  std::string what;            // "light frame, 64 lights", "cube map 64 px, 1 level"...
+  double bytes = 0.0;          // median over the messages read
+  double rawTexelBytes = 0.0;  // cube maps: texels before zstd; 0 for light frames
+};
+
+[[nodiscard]] std::expected<std::vector<MessageSize>, std::string> messageSizes(
+    const std::string& vemdPath);
+
+struct RateResult {
+  std::size_t clients = 0;
+  double processedHz = 0.0;    // median of vemd's Status.frame_rate_hz over the window
+  double receivedHz = 0.0;     // light frames the StreamClient received per second
+  std::uint64_t skipped = 0;   // seq gaps that client saw over the window
+  std::uint64_t dropped = 0;   // frames vemd's capture queue dropped over the window
+  double cpuMsPerFrame = 0.0;  // vemd's CPU time (all its threads, user + system) per frame
+};
+
+[[nodiscard]] std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPath,
+                                                                     std::size_t clients,
+                                                                     double windowS);
+
+// The q-quantile (0..1) of `values`, linearly interpolated; 0 when empty.
+[[nodiscard]] double quantile(std::vector<double> values, double q);
+
+}  // namespace vem::bench

@@ -1,0 +1,98 @@
+#include "stream_e2e/raw_ws_client.h"
+
+#include <boost/asio/ip/address.hpp>
+#include <boost/beast/core/buffers_to_string.hpp>
+#include <boost/beast/core/error.hpp>
+#include <boost/beast/http/field.hpp>
+#include <boost/beast/websocket.hpp>
+
+#include "proto/stream_protocol.h"
+
+namespace vem::e2e {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace websocket = boost::beast::websocket;
+using tcp = asio::ip::tcp;
+
+RawWsClient::RawWsClient() : ws_(ioc_) {}
+
+RawWsClient::~RawWsClient() { drop(); }
+
+// Runs one asynchronous operation to its end or to `timeout`, when the socket is dropped (which
+// ends the operation) and false returned.
+template <class Start>
+bool RawWsClient::run(Start start, std::chrono::milliseconds timeout) {
+  bool finished = false;
+  beast::error_code error;
+  start([&](beast::error_code ec, auto&&...) {
+    error = ec;
+    finished = true;
+  });
+  ioc_.restart();
+  ioc_.run_for(timeout);
+  if (!finished) {
+    drop();
+    ioc_.restart();
+    ioc_.run();
+    return false;
+  }
+  return !error;
+}
+
+int RawWsClient::connect(std::uint16_t port, const RawConnectOptions& options) {
+  beast::error_code ec;
+  tcp::socket& socket = ws_.next_layer();
+  socket.open(tcp::v4(), ec);
+  if (ec) return -1;
+  if (options.receiveBufferBytes) {
+    socket.set_option(asio::socket_base::receive_buffer_size(*options.receiveBufferBytes), ec);
+    if (ec) return -1;
+  }
+  const tcp::endpoint endpoint(asio::ip::make_address("127.0.0.1"), port);
+  if (!run([&](auto done) { socket.async_connect(endpoint, done); }, options.timeout)) return -1;
+  if (options.token) {
+    ws_.set_option(websocket::stream_base::decorator(
+        [token = *options.token](websocket::request_type& request) {
+          request.set(beast::http::field::authorization, "Bearer " + token);
+        }));
+  }
+  ws_.binary(true);
+  websocket::response_type response;
+  if (!run([&](auto done) { ws_.async_handshake(response, "127.0.0.1", "/", done); },
+           options.timeout)) {
+    return response.result_int() != 0 ? int(response.result_int()) : -1;
+  }
+  const auto hello = readBytes(options.timeout);
+  stream::ServerMessage message;
+  if (!hello || !message.ParseFromString(*hello) || !message.has_hello()) return -1;
+  return 0;
+}
+
+bool RawWsClient::send(stream::ClientMessage message, std::chrono::milliseconds timeout) {
+  if (message.protocol_major() == 0) {
+    message.set_protocol_major(stream::kProtocolMajor);
+    message.set_protocol_minor(stream::kProtocolMinor);
+  }
+  const std::string bytes = message.SerializeAsString();
+  return run([&](auto done) { ws_.async_write(asio::buffer(bytes), done); }, timeout);
+}
+
+std::optional<std::string> RawWsClient::readBytes(std::chrono::milliseconds timeout) {
+  buffer_.clear();
+  if (!run([&](auto done) { ws_.async_read(buffer_, done); }, timeout)) return std::nullopt;
+  return beast::buffers_to_string(buffer_.cdata());
+}
+
+void RawWsClient::close(std::chrono::milliseconds timeout) {
+  if (!ws_.is_open()) return;
+  (void)run([&](auto done) { ws_.async_close(websocket::close_code::normal, done); }, timeout);
+  drop();
+}
+
+void RawWsClient::drop() {
+  beast::error_code ignored;
+  ws_.next_layer().close(ignored);
+}
+
+}  // namespace vem::e2e
