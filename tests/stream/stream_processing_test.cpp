@@ -3,6 +3,7 @@
 // and the recording switch. Real pipeline on the small test camera, real server on port 0.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -236,16 +237,24 @@ TEST_F(StreamProcessing, StatusTellsClientsTheCameraIsGoneOrTheReplayEnded) {
   EXPECT_EQ(publishedState(*server_, *sink_, *pipeline_, counters), SOURCE_STATE_TIMEOUT);
 }
 
-TEST(PipelineReconfigure, ChangingTheLightCountKeepsTheFilterRunning) {
+// A pipeline of the small test camera that has processed sky frames 0 to 11 (its filter is full).
+std::optional<vemd::Pipeline> pipelineAfterTwelveFrames() {
   auto pipeline = vemd::Pipeline::create(vem::testing::smallCameraToml(), "test camera",
                                          vem::testing::smallProcessing());
-  ASSERT_TRUE(pipeline.has_value());
+  if (!pipeline) return std::nullopt;
   vemd::CapturedFrame captured;
   for (int i = 0; i < 12; ++i) {
     captured.frame = vem::testing::cachedSkyFrame(i);
     captured.seq = std::uint64_t(i);
     (void)pipeline->process(captured);
   }
+  return std::move(*pipeline);
+}
+
+TEST(PipelineReconfigure, ChangingTheLightCountKeepsTheFilterRunning) {
+  auto pipeline = pipelineAfterTwelveFrames();
+  ASSERT_TRUE(pipeline.has_value());
+  vemd::CapturedFrame captured;
   vemd::ProcessingOptions options = pipeline->options();
   options.lightCount = 16;
   ASSERT_TRUE(pipeline->reconfigure(options).has_value());
@@ -257,15 +266,9 @@ TEST(PipelineReconfigure, ChangingTheLightCountKeepsTheFilterRunning) {
 }
 
 TEST(PipelineReconfigure, ChangingTheFilterStartsItAfresh) {
-  auto pipeline = vemd::Pipeline::create(vem::testing::smallCameraToml(), "test camera",
-                                         vem::testing::smallProcessing());
+  auto pipeline = pipelineAfterTwelveFrames();
   ASSERT_TRUE(pipeline.has_value());
   vemd::CapturedFrame captured;
-  for (int i = 0; i < 12; ++i) {
-    captured.frame = vem::testing::cachedSkyFrame(i);
-    captured.seq = std::uint64_t(i);
-    (void)pipeline->process(captured);
-  }
   vemd::ProcessingOptions options = pipeline->options();
   options.filter = FilterPreset::Equiripple5;
   ASSERT_TRUE(pipeline->reconfigure(options).has_value());

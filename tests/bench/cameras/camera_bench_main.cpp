@@ -14,9 +14,11 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "bench/cameras/camera_latency.h"
+#include "bench/markdown_output.h"
 
 namespace {
 
@@ -58,33 +60,14 @@ std::string report(const std::vector<vem::bench::LatencyRun>& runs, int frames) 
 int main(int argc, char** argv) {
   int frames = 200;
   std::string reportPath;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) {
-      frames = std::atoi(argv[++i]);
-    } else if (std::strcmp(argv[i], "--report") == 0 && i + 1 < argc) {
-      reportPath = argv[++i];
-    } else {
-      std::cerr << "usage: vem_camera_bench [--frames N] [--report FILE.md]\n";
-      return 2;
-    }
-  }
-  if (frames < 10) {
-    std::cerr << "vem_camera_bench: --frames: expected at least 10\n";
-    return 2;
-  }
+  CLI::App app{"Latency from a frame handed over by each camera backend (against its fake) to lights"};
+  app.add_option("--frames", frames, "Frames measured per backend")->check(CLI::Range(10, 1000000));
+  app.add_option("--report", reportPath, "Also write the markdown section to this file");
+  CLI11_PARSE(app, argc, argv);
   std::vector<vem::bench::LatencyRun> runs;
   runs.push_back(vem::bench::benchAravisFakeCamera(frames));
   runs.push_back(vem::bench::benchV4l2FakeDevice(frames));
   runs.push_back(vem::bench::benchLibcameraFakeCamera(frames));
-  const std::string md = report(runs, frames);
-  std::cout << md;
-  if (!reportPath.empty()) {
-    std::ofstream out(reportPath);
-    out << md;
-    if (!out) {
-      std::cerr << "vem_camera_bench: cannot write " << reportPath << "\n";
-      return 1;
-    }
-  }
+  if (!vem::bench::emitMarkdown("vem_camera_bench", report(runs, frames), reportPath)) return 1;
   return 0;
 }

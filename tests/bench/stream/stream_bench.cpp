@@ -214,8 +214,9 @@ std::expected<std::vector<MessageSize>, std::string> messageSizes(const std::str
 }
 
 std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPath,
+                                                       const std::string& rate,
                                                        std::size_t clients, double windowS) {
-  auto vemd = startVemd(vemdPath, "max", {});
+  auto vemd = startVemd(vemdPath, rate, {});
   if (!vemd) return std::unexpected(vemd.error());
   std::atomic<bool> stop{false};
   std::atomic<std::size_t> connected{0};
@@ -270,6 +271,7 @@ std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPa
     return std::unexpected(fmt::format("only {} of {} clients connected", allConnected, clients));
   }
   RateResult result;
+  result.rate = rate;
   result.clients = clients;
   result.processedHz = quantile(rates, 0.5);
   result.receivedHz = double(endStats.received - startStats.received) / elapsedS;

@@ -4,8 +4,8 @@
 //   the decoded frame), both CLOCK_REALTIME, in ms;
 // - messageSizes: bytes of each serialized ServerMessage a raw client receives: light frames per
 //   light count, environment frames (cube maps) per face size and mip levels;
-// - rateWithClients: vemd's processed frame rate at --rate max (its Status) with N clients
-//   connected: one StreamClient that reads the Status plus N - 1 raw clients that read and
+// - rateWithClients: vemd's processed frame rate at --rate max or a paced rate (its Status) with
+//   N clients connected: one StreamClient that reads the Status plus N - 1 raw clients that read and
 //   discard every message, each on its own thread; and vemd's CPU time per processed frame
 //   (/proc/PID/stat), which shows what each client costs when the two cores are shared.
 // Each returns one sentence when vemd or a client does not come up.
@@ -42,6 +42,7 @@ struct MessageSize {
     const std::string& vemdPath);
 
 struct RateResult {
+  std::string rate;  // vemd's --rate: "max" or frames per second
   std::size_t clients = 0;
   double processedHz = 0.0;    // median of vemd's Status.frame_rate_hz over the window
   double receivedHz = 0.0;     // light frames the StreamClient received per second
@@ -51,6 +52,7 @@ struct RateResult {
 };
 
 [[nodiscard]] std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPath,
+                                                                     const std::string& rate,
                                                                      std::size_t clients,
                                                                      double windowS);
 
