@@ -158,6 +158,9 @@ class WebSocketSession final : public Connection,
              " bytes (1009)";
     }
     if (ec == beast::error::timeout) return "the client stopped answering (idle timeout)";
+    if (ec == boost::asio::error::eof || ec == boost::asio::error::connection_reset) {
+      return "the client left without a closing handshake (" + ec.message() + ")";
+    }
     return "the connection failed (" + ec.message() + ")";
   }
 

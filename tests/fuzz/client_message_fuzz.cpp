@@ -15,6 +15,7 @@
 #include <variant>
 
 #include "stream/client_message_handler.h"
+#include "tests/fuzz/seed_option.h"
 
 namespace {
 
@@ -75,13 +76,7 @@ void writeSeeds(const std::string& dir) {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
-  for (int i = 1; i < *argc; ++i) {
-    const char* arg = (*argv)[i];
-    if (std::strncmp(arg, "--write-seeds=", 14) == 0) {
-      writeSeeds(arg + 14);
-      std::exit(0);
-    }
-  }
+  vem::fuzz::handleWriteSeedsOption(*argc, *argv, writeSeeds);
   return 0;
 }
 

@@ -21,6 +21,7 @@
 #include "proto/stream_protocol.h"
 #include "proto/texel_packing.h"
 #include "proto/vem_stream.pb.h"
+#include "tests/fuzz/seed_option.h"
 
 namespace {
 
@@ -130,13 +131,7 @@ void checkAccepted(const ServerEvent& event) {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
-  for (int i = 1; i < *argc; ++i) {
-    const char* arg = (*argv)[i];
-    if (std::strncmp(arg, "--write-seeds=", 14) == 0) {
-      writeSeeds(arg + 14);
-      std::exit(0);
-    }
-  }
+  vem::fuzz::handleWriteSeedsOption(*argc, *argv, writeSeeds);
   return 0;
 }
 
