@@ -8,7 +8,7 @@ packages=(
   libspdlog-dev libliquid-dev libtomlplusplus-dev
   libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev libssl-dev
   libsystemd-dev
-  libaravis-dev libusb-1.0-0-dev aravis-tools libcamera-dev v4l-utils iproute2 util-linux
+  libaravis-dev libusb-1.0-0-dev aravis-tools libcamera-dev v4l-utils iproute2 util-linux openssl
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-14 libclang-rt-14-dev
 )
