@@ -219,11 +219,13 @@ TEST(AravisSource, SizeOffTheCamerasIncrementIsRefusedWithASentence) {
 TEST(AravisSource, InterruptWakesANextThatWaitsForASlowCamera) {
   auto fake = FakeGvCamera::start("VEM10", writeFakeGenicam({"Mono8"}));
   ASSERT_TRUE(fake);
-  cameras::CameraSettings settings = fakeSettings("Mono8", 64, 64, 0.5);
-  settings.timeoutMs = 10'000;
+  // One frame every 5 s: even a slow (sanitizer) build opens and starts the camera well within a
+  // period, so no second frame is waiting in the pool after the first.
+  cameras::CameraSettings settings = fakeSettings("Mono8", 64, 64, 0.2);
+  settings.timeoutMs = 12'000;
   auto source = AravisSource::open(kFakeAddress, settings);
   ASSERT_TRUE(source) << source.error().message;
-  ASSERT_TRUE((*source)->next());  // then the next frame is 2 s away
+  ASSERT_TRUE((*source)->next());  // then the next frame is 5 s away
   std::thread interrupter([&] {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     (*source)->interrupt();
