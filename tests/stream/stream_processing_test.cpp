@@ -24,14 +24,7 @@ namespace {
 using testing::WsTestClient;
 namespace fs = std::filesystem;
 
-template <class Ready>
-bool eventually(Ready ready) {
-  for (int i = 0; i < 4000; ++i) {
-    if (ready()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return false;
-}
+using testing::eventually;
 
 class StreamProcessing : public ::testing::Test {
  protected:

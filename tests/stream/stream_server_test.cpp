@@ -42,15 +42,7 @@ SharedBytes lightsMessage(std::uint64_t seq, int lights = 16) {
   return std::make_shared<const std::string>(serialize(std::move(message)));
 }
 
-// Waits (boundedly) until `ready` holds; the bound only keeps a broken server from hanging.
-template <class Ready>
-bool eventually(Ready ready) {
-  for (int i = 0; i < 4000; ++i) {
-    if (ready()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return false;
-}
+using testing::eventually;
 
 TEST(StreamServer, HelloComesFirstAndSaysWhetherControlIsAllowed) {
   StreamServerOptions options;

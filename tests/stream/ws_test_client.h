@@ -5,6 +5,7 @@
 #pragma once
 
 #include <chrono>
+#include <thread>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -135,5 +136,15 @@ class WsTestClient {
   beast::error_code error_;
   stream::ServerMessage hello_;
 };
+
+// Waits (boundedly, 20 s) until `ready` holds; the bound only keeps a broken server from hanging.
+template <class Ready>
+bool eventually(Ready ready) {
+  for (int i = 0; i < 4000; ++i) {
+    if (ready()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return false;
+}
 
 }  // namespace vem::testing
