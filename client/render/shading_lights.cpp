@@ -1,0 +1,101 @@
+#include "client/render/shading_lights.h"
+
+#include <algorithm>
+#include <bit>
+#include <numeric>
+
+#include <glm/glm.hpp>
+
+#include "core/color.h"
+#include "core/light_clustering.h"
+
+namespace vem::render {
+namespace {
+
+LightSet prefixOf(const LightSet& lights, std::size_t count) {
+  LightSet prefix;
+  prefix.luminanceSr = lights.luminanceSr;
+  prefix.black = lights.black;
+  const std::size_t n = std::min(count, lights.lights.size());
+  prefix.lights.assign(lights.lights.begin(), lights.lights.begin() + std::ptrdiff_t(n));
+  return prefix;
+}
+
+// The S lights of largest luminance (ties in light order), by slot.
+std::vector<std::uint32_t> shadowCastersOf(const LightSet& diffuse, std::size_t shadowedCount) {
+  std::vector<std::uint32_t> order(diffuse.lights.size());
+  std::iota(order.begin(), order.end(), 0U);
+  std::ranges::stable_sort(order, [&](std::uint32_t a, std::uint32_t b) {
+    return luminance(diffuse.lights[a].rgb) > luminance(diffuse.lights[b].rgb);
+  });
+  order.resize(std::min({shadowedCount, kMaxShadowMaps, order.size()}));
+  return order;
+}
+
+// For each light, the slot of the caster nearest in angle (its own when it is a caster).
+std::vector<std::int32_t> nearestSlots(std::span<const Light> lights, const LightSet& diffuse,
+                                       std::span<const std::uint32_t> casters) {
+  std::vector<std::int32_t> slots(lights.size(), -1);
+  if (casters.empty()) {
+    return slots;
+  }
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    float best = -2.0F;
+    for (std::size_t slot = 0; slot < casters.size(); ++slot) {
+      const float d = glm::dot(lights[i].dir, diffuse.lights[casters[slot]].dir);
+      if (d > best) {
+        best = d;
+        slots[i] = std::int32_t(slot);
+      }
+    }
+  }
+  return slots;
+}
+
+std::uint64_t keyOf(const LightSet& diffuse, std::span<const std::uint32_t> casters) {
+  std::uint64_t key = 1469598103934665603ULL ^ casters.size();  // FNV-1a over the directions
+  for (std::uint32_t index : casters) {
+    const glm::vec3 d = diffuse.lights[index].dir;
+    for (float c : {d.x, d.y, d.z}) {
+      key = (key ^ std::bit_cast<std::uint32_t>(c)) * 1099511628211ULL;
+    }
+  }
+  return key;
+}
+
+}  // namespace
+
+LightingGeometry makeLightingGeometry() {
+  return LightingGeometry{makeAngularRegions(), makeGlossyRegions()};
+}
+
+ShadingLights buildShadingLights(const LightSet& lights, const LightingGeometry& geometry,
+                                 const LightingOptions& options) {
+  ShadingLights out;
+  const LightSet prefix = prefixOf(lights, std::max<std::size_t>(options.lightCount, 1));
+  if (options.clusterBudget > 0 && !prefix.lights.empty()) {
+    ClusteringParams params;
+    params.clusterBudget = options.clusterBudget;
+    params.layout = options.clusterLayout;
+    out.diffuse = clusterLights(prefix, params).clusters;
+  } else {
+    out.diffuse = prefix;
+  }
+  if (options.regions) {
+    out.diffuseLists = visibleLightLists(geometry.diffuseRegions, out.diffuse);
+  }
+  if (options.glossyPass && !prefix.lights.empty()) {
+    const std::size_t high = std::clamp<std::size_t>(options.highCount, 1, prefix.lights.size());
+    out.glossy = makeGlossyLightSets(prefix, high, geometry.glossyRegions);
+  }
+  out.shadowCasters = shadowCastersOf(out.diffuse, options.shadowedCount);
+  out.shadowSlotOfDiffuse = nearestSlots(out.diffuse.lights, out.diffuse, out.shadowCasters);
+  if (out.glossy) {
+    out.shadowSlotOfLow = nearestSlots(out.glossy->low.lights, out.diffuse, out.shadowCasters);
+  }
+  out.maxConeLights = std::max<std::size_t>(options.maxConeLights, 1);
+  out.lightsKey = keyOf(out.diffuse, out.shadowCasters);
+  return out;
+}
+
+}  // namespace vem::render

@@ -1,0 +1,52 @@
+#include "client/scene/orbit_camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace vem::scene {
+
+glm::vec3 OrbitCamera::eyeWorld() const {
+  const glm::vec3 offset(std::cos(elevationRad) * std::cos(azimuthRad), std::sin(elevationRad),
+                         std::cos(elevationRad) * std::sin(azimuthRad));
+  return targetWorld + distance * offset;
+}
+
+glm::mat4 OrbitCamera::viewFromWorld() const {
+  return glm::lookAt(eyeWorld(), targetWorld, glm::vec3(0.0F, 1.0F, 0.0F));
+}
+
+glm::mat4 OrbitCamera::clipFromView(float aspect) const {
+  return glm::perspective(verticalFovRad, aspect, nearPlane, farPlane);
+}
+
+Ray OrbitCamera::primaryRay(float xPx, float yPx, int widthPx, int heightPx) const {
+  const float aspect = float(widthPx) / float(heightPx);
+  const float tanHalf = std::tan(0.5F * verticalFovRad);
+  const float ndcX = xPx / float(widthPx) * 2.0F - 1.0F;
+  const float ndcY = 1.0F - yPx / float(heightPx) * 2.0F;
+  const glm::vec3 dirView(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0F);
+  const glm::mat4 worldFromView = glm::inverse(viewFromWorld());
+  const glm::vec3 dirWorld = glm::normalize(glm::vec3(worldFromView * glm::vec4(dirView, 0.0F)));
+  return Ray{eyeWorld(), dirWorld};
+}
+
+OrbitCamera framingCamera(const Bounds& bounds, float azimuthRad, float elevationRad) {
+  OrbitCamera camera;
+  camera.targetWorld = bounds.centre();
+  camera.azimuthRad = azimuthRad;
+  camera.elevationRad = elevationRad;
+  const float radius = std::max(bounds.radius(), 1e-3F);
+  camera.distance = 1.15F * radius / std::sin(0.5F * camera.verticalFovRad);
+  camera.nearPlane = std::max(camera.distance - 1.5F * radius, 0.01F * radius);
+  camera.farPlane = camera.distance + 1.5F * radius;
+  return camera;
+}
+
+OrbitCamera orbited(OrbitCamera camera, float deltaAzimuthRad) {
+  camera.azimuthRad += deltaAzimuthRad;
+  return camera;
+}
+
+}  // namespace vem::scene

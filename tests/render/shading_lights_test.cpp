@@ -1,0 +1,117 @@
+#include "client/render/shading_lights.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+namespace vem::render {
+namespace {
+
+LightSet lightsAlong(std::initializer_list<std::pair<glm::vec3, float>> entries) {
+  LightSet set;
+  std::uint32_t id = 0;
+  for (const auto& [dir, power] : entries) {
+    set.lights.push_back(Light{id++, glm::normalize(dir), glm::vec3(power)});
+    set.luminanceSr += double(power);
+  }
+  return set;
+}
+
+const LightingGeometry& geometry() {
+  static const LightingGeometry g = makeLightingGeometry();
+  return g;
+}
+
+TEST(ShadingLights, PrefixKeepsTheFirstNLightsInOrder) {
+  const LightSet set = lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 1}, {{0, 1, 1}, 1}, {{-1, 1, 0}, 1}});
+  LightingOptions options;
+  options.lightCount = 2;
+  const ShadingLights s = buildShadingLights(set, geometry(), options);
+  ASSERT_EQ(s.diffuse.lights.size(), 2U);
+  EXPECT_EQ(s.diffuse.lights[0].id, 0U);
+  EXPECT_EQ(s.diffuse.lights[1].id, 1U);
+}
+
+TEST(ShadingLights, ShadowCastersAreTheBrightestLightsNotTheFirst) {
+  const LightSet set = lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 9}, {{0, 1, 1}, 2}, {{-1, 1, 0}, 5}});
+  LightingOptions options;
+  options.lightCount = 4;
+  options.shadowedCount = 2;
+  const ShadingLights s = buildShadingLights(set, geometry(), options);
+  ASSERT_EQ(s.shadowCasters.size(), 2U);
+  EXPECT_EQ(s.shadowCasters[0], 1U);
+  EXPECT_EQ(s.shadowCasters[1], 3U);
+}
+
+TEST(ShadingLights, UnshadowedLightTakesTheMapOfTheNearestCaster) {
+  const LightSet set =
+      lightsAlong({{{1, 0.2F, 0}, 5}, {{-1, 0.2F, 0}, 5}, {{0.9F, 0.4F, 0.1F}, 1}, {{-1, 0.5F, 0}, 1}});
+  LightingOptions options;
+  options.lightCount = 4;
+  options.shadowedCount = 2;
+  const ShadingLights s = buildShadingLights(set, geometry(), options);
+  ASSERT_EQ(s.shadowSlotOfDiffuse.size(), 4U);
+  EXPECT_EQ(s.shadowSlotOfDiffuse[0], 0);  // casters own their slots
+  EXPECT_EQ(s.shadowSlotOfDiffuse[1], 1);
+  EXPECT_EQ(s.shadowSlotOfDiffuse[2], 0);  // near +X
+  EXPECT_EQ(s.shadowSlotOfDiffuse[3], 1);  // near -X
+}
+
+TEST(ShadingLights, NoShadowMapsMeansEveryLightIsUnshadowed) {
+  const LightSet set = lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 1}});
+  LightingOptions options;
+  options.shadowedCount = 0;
+  const ShadingLights s = buildShadingLights(set, geometry(), options);
+  EXPECT_TRUE(s.shadowCasters.empty());
+  for (std::int32_t slot : s.shadowSlotOfDiffuse) {
+    EXPECT_EQ(slot, -1);
+  }
+}
+
+TEST(ShadingLights, KeyChangesWhenACasterMovesAndOnlyThen) {
+  LightSet set = lightsAlong({{{0, 1, 0}, 5}, {{1, 1, 0}, 1}, {{0, 1, 1}, 1}});
+  LightingOptions options;
+  options.shadowedCount = 1;
+  const std::uint64_t before = buildShadingLights(set, geometry(), options).lightsKey;
+  EXPECT_EQ(buildShadingLights(set, geometry(), options).lightsKey, before);
+  set.lights[2].dir = glm::normalize(glm::vec3(0, 1, -1));  // not a caster
+  EXPECT_EQ(buildShadingLights(set, geometry(), options).lightsKey, before);
+  set.lights[0].dir = glm::normalize(glm::vec3(0.1F, 1, 0));  // the caster
+  EXPECT_NE(buildShadingLights(set, geometry(), options).lightsKey, before);
+}
+
+TEST(ShadingLights, RegionListsOnlyWithRegionsAndGlossySetsOnlyWithTheGlossyPass) {
+  const LightSet set = lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 1}, {{0, 1, 1}, 1}});
+  LightingOptions options;
+  options.regions = false;
+  options.glossyPass = false;
+  ShadingLights s = buildShadingLights(set, geometry(), options);
+  EXPECT_TRUE(s.diffuseLists.offsets.empty());
+  EXPECT_FALSE(s.glossy.has_value());
+  options.regions = true;
+  options.glossyPass = true;
+  options.highCount = 2;
+  s = buildShadingLights(set, geometry(), options);
+  EXPECT_EQ(s.diffuseLists.offsets.size(), geometry().diffuseRegions.count() + 1);
+  ASSERT_TRUE(s.glossy.has_value());
+  EXPECT_EQ(s.glossy->high.lights.size(), 2U);
+  EXPECT_EQ(s.shadowSlotOfLow.size(), 3U);
+}
+
+TEST(ShadingLights, ClusteringMergesNearbyLightsAndKeepsThePower) {
+  LightSet set;
+  for (std::uint32_t i = 0; i < 64; ++i) {
+    const float a = 0.002F * float(i);
+    set.lights.push_back(Light{i, glm::normalize(glm::vec3(a, 1, 0)), glm::vec3(1.0F)});
+  }
+  set.luminanceSr = 64;
+  LightingOptions options;
+  options.lightCount = 64;
+  options.clusterBudget = 16;
+  const ShadingLights s = buildShadingLights(set, geometry(), options);
+  ASSERT_EQ(s.diffuse.lights.size(), 1U);  // all within one cluster radius
+  EXPECT_NEAR(s.diffuse.lights[0].rgb.x, 64.0F, 1e-3F);
+}
+
+}  // namespace
+}  // namespace vem::render
