@@ -9,6 +9,8 @@ packages=(
   libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev libssl-dev
   libsystemd-dev
   libaravis-dev libusb-1.0-0-dev aravis-tools libcamera-dev v4l-utils iproute2 util-linux openssl
+  libembree-dev libglfw3-dev libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libegl-mesa0
+  libtinyobjloader-dev libtinygltf-dev xvfb xauth
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-14 libclang-rt-14-dev
 )
