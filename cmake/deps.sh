@@ -3,7 +3,7 @@
 # Run as root (the README's two commands call it). Safe to run again: installs nothing twice.
 set -euo pipefail
 packages=(
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config ccache
   libglm-dev libnanoflann-dev libopenexr-dev libopencv-dev libcli11-dev nlohmann-json3-dev
   libspdlog-dev libliquid-dev libtomlplusplus-dev
   libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev libssl-dev
