@@ -1,0 +1,41 @@
+// renderWithLights: the Embree renderer of vemview's lights, the same estimator as the OpenGL
+// renderer (paper 004 sections 4 and 5.2) with ray-traced visibility for every light instead of
+// shadow maps.
+//
+// Per pixel, the primary ray of scene::OrbitCamera::primaryRay through the pixel's centre; at its
+// hit (normal turned toward the eye, shading_point.h), in the units of render/shading_model.h:
+//   L_o = sum over the diffuse lights i (render/shading_lights.h; the region list of n when the
+//         lights carry lists, else all of them) of
+//           (diffuseBrdf + S) rgb_i max(0, n . dir_i) V_i,
+//         S = specularBrdf(dir_i) when the material is glossy and no glossy set is given, else 0;
+//       + for glossy materials with ShadingLights::glossy set: the L/H lights of
+//         glossyLightsFor(R) (core/glossy_light_sets.h, R = the reflected direction, at most
+//         ShadingLights::maxConeLights cone lights), each
+//           specularBrdf(dir_k) low.rgb_k weight_k max(0, n . dir_k) V_k;
+//       + for mirror-like materials when a cube map is given, instead of the specular lights:
+//           mirrorReflectance(n, wo) sampleCubeMap(cube, R)   (unoccluded, as the GL renderer).
+// V is an occlusion ray toward the light (1 with shadows off). Pixels whose ray leaves the scene
+// show the cube map in the ray's direction (black without one) and are not covered.
+// Rows are shared by options.threadCount std::threads; the image does not depend on the count.
+#pragma once
+
+#include "client/embree/embree_scene.h"
+#include "client/render/linear_image.h"
+#include "client/render/shading_lights.h"
+#include "client/scene/orbit_camera.h"
+#include "core/cube_map.h"
+
+namespace vem::embree {
+
+struct LightRenderOptions {
+  bool shadows = true;  // false: V = 1 for every light (to compare with unshadowed renders)
+  int threadCount = 2;  // <= 0: one per hardware thread
+};
+
+// widthPx, heightPx >= 1. `cube` may be null (black background, mirrors lit by the lights).
+[[nodiscard]] render::LinearImage renderWithLights(
+    const EmbreeScene& scene, const scene::OrbitCamera& camera, int widthPx, int heightPx,
+    const render::ShadingLights& lights, const render::LightingGeometry& geometry,
+    const CubeMap* cube, const LightRenderOptions& options = {});
+
+}  // namespace vem::embree
