@@ -44,6 +44,24 @@ OrbitCamera framingCamera(const Bounds& bounds, float azimuthRad, float elevatio
   return camera;
 }
 
+OrbitCamera viewingCamera(const Scene& scene, float azimuthRad, float elevationRad) {
+  Scene objects;
+  for (const Mesh& mesh : scene.meshes) {
+    Scene one;
+    one.meshes = {mesh};
+    const Bounds b = sceneBounds(one);
+    if (b.max.y - b.min.y > 1e-6F * b.radius()) {
+      objects.meshes.push_back(mesh);
+    }
+  }
+  OrbitCamera camera =
+      framingCamera(sceneBounds(objects.meshes.empty() ? scene : objects), azimuthRad, elevationRad);
+  const float sceneRadius = sceneBounds(scene).radius();
+  camera.farPlane = camera.distance + 2.0F * sceneRadius;
+  camera.nearPlane = std::max(0.02F * camera.distance, camera.distance - 2.0F * sceneRadius);
+  return camera;
+}
+
 OrbitCamera orbited(OrbitCamera camera, float deltaAzimuthRad) {
   camera.azimuthRad += deltaAzimuthRad;
   return camera;

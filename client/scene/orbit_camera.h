@@ -43,6 +43,11 @@ struct OrbitCamera {
 // follow the bounds.
 [[nodiscard]] OrbitCamera framingCamera(const Bounds& bounds, float azimuthRad = 0.6F,
                                         float elevationRad = 0.35F);
+// vemview's starting camera: frames the scene's objects, not its floor (meshes flat in y, ground
+// planes, are left out of the framed bounds unless there is nothing else); near and far planes
+// hold the whole scene. Azimuth 35 degrees, elevation 20 degrees by default.
+[[nodiscard]] OrbitCamera viewingCamera(const Scene& scene, float azimuthRad = 0.61F,
+                                        float elevationRad = 0.35F);
 // The camera turned by `deltaAzimuthRad` about the target (vemview's orbit).
 [[nodiscard]] OrbitCamera orbited(OrbitCamera camera, float deltaAzimuthRad);
 
