@@ -1,0 +1,39 @@
+// The glTF 2.0 loader (tinygltf 2.7): a .gltf (JSON, external or data-URI buffers) or .glb file
+// as a Scene. Textures are not used (images are not even decoded).
+//
+// Conventions:
+// - glTF's frame is the world frame of scene/scene.h already (right-handed, +Y up, metres).
+//   The scene drawn is the file's default scene, else scene 0, else every root node.
+// - Node transforms (a matrix, or translation * rotation * scale) compose down the hierarchy:
+//   worldFromNode = worldFromParent * parentFromNode. Positions take worldFromNode, normals its
+//   inverse transpose (then renormalised). A node whose transform mirrors (negative determinant)
+//   has its triangles' winding reversed so fronts stay counter-clockwise; a node that scales to
+//   zero is skipped with a warning.
+// - One Mesh per (node, triangle primitive), named "mesh/primitive". Normals are the file's
+//   NORMAL, or smooth area-weighted ones (scene/mesh_normals.h) when it has none.
+// - Materials: pbrMetallicRoughness maps, with base = baseColorFactor.rgb, m = metallicFactor,
+//   r = roughnessFactor (all clamped to [0, 1]), to
+//     diffuseAlbedo  = base (1 - m)
+//     lobe           = GGX when m > 0 or r < 0.9, else Lambertian
+//     roughness      = max(r, 0.01)              (GGX only)
+//     specularAlbedo = mix(0.04, base, m) = F0    (GGX only; zero for Lambertian)
+//   A primitive with no material gets vemcast's default (Lambertian, 0.8 grey), not glTF's
+//   default (a rough white metal), which would light very differently.
+// - Refused (BadContents, one sentence naming the file, the mesh / primitive / accessor and what
+//   was expected): tinygltf's parse errors, primitives of a mode other than 4 (triangles),
+//   missing POSITION, accessors or buffer views past the end of their buffer, indices >= the
+//   vertex count, non-finite positions or normals, zero-length normals, no triangles.
+#pragma once
+
+#include <expected>
+#include <filesystem>
+
+#include "client/scene/scene_file_result.h"
+
+namespace vem::scene {
+
+// `.glb` files are read as binary glTF, anything else as JSON glTF.
+[[nodiscard]] std::expected<LoadedScene, SceneFileFailure> loadGltf(
+    const std::filesystem::path& path);
+
+}  // namespace vem::scene

@@ -1,0 +1,304 @@
+#include "client/scene/obj_loader.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <tiny_obj_loader.h>
+#include <algorithm>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <iterator>
+#include <unordered_map>
+
+#include "client/scene/mesh_normals.h"
+#include "client/scene/obj_text_check.h"
+
+namespace vem::scene {
+namespace {
+
+namespace fs = std::filesystem;
+using Warnings = std::vector<std::string>;
+
+constexpr float kMinRoughness = 0.01F;
+constexpr float kDielectricF0 = 0.04F;
+
+glm::vec3 vec3At(const std::vector<tinyobj::real_t>& values, std::size_t index) {
+  return {static_cast<float>(values[3 * index]), static_cast<float>(values[3 * index + 1]),
+          static_cast<float>(values[3 * index + 2])};
+}
+
+glm::vec3 vec3Of(const tinyobj::real_t* v) {
+  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+float maxComponent(glm::vec3 v) { return std::max({v.x, v.y, v.z}); }
+
+glm::vec3 clampedColour(glm::vec3 colour, const char* field, const std::string& material,
+                        Warnings& warnings) {
+  const glm::vec3 clamped = glm::clamp(colour, 0.0F, 1.0F);
+  if (clamped != colour) {
+    warnings.push_back(fmt::format("material '{}': {} clamped to [0, 1]", material, field));
+  }
+  return clamped;
+}
+
+Material fromMtl(const tinyobj::material_t& mtl, Warnings& warnings) {
+  Material m;
+  m.name = mtl.name;
+  const glm::vec3 kd = clampedColour(vec3Of(mtl.diffuse), "Kd", mtl.name, warnings);
+  const glm::vec3 ks = clampedColour(vec3Of(mtl.specular), "Ks", mtl.name, warnings);
+  m.diffuseAlbedo = kd;
+  if (mtl.roughness > 0) {
+    const float metallic = std::clamp(static_cast<float>(mtl.metallic), 0.0F, 1.0F);
+    m.lobe = Lobe::Ggx;
+    m.roughness = std::clamp(static_cast<float>(mtl.roughness), kMinRoughness, 1.0F);
+    m.specularAlbedo =
+        maxComponent(ks) > 0.0F ? ks : glm::mix(glm::vec3(kDielectricF0), kd, metallic);
+    m.diffuseAlbedo = kd * (1.0F - metallic);
+  } else if (maxComponent(ks) > 0.0F) {
+    m.lobe = Lobe::Blinn;
+    m.specularAlbedo = ks;
+    m.exponent = std::max(static_cast<float>(mtl.shininess), 0.0F);
+  }
+  return m;
+}
+
+bool outOfRange(int index, std::size_t count) {
+  return index < 0 || static_cast<std::size_t>(index) >= count;
+}
+
+// The first face that is not a triangle or refers to a missing vertex or normal.
+std::optional<SceneFileFailure> checkFaces(const tinyobj::ObjReader& reader, const fs::path& path) {
+  const std::size_t positions = reader.GetAttrib().vertices.size() / 3;
+  const std::size_t normals = reader.GetAttrib().normals.size() / 3;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    const auto& counts = shape.mesh.num_face_vertices;
+    if (const auto bad = std::ranges::find_if(counts, [](unsigned char n) { return n != 3; });
+        bad != counts.end()) {
+      return badContents(path, fmt::format("face {} of shape '{}' has {} vertices and could not be "
+                                           "triangulated",
+                                           bad - counts.begin() + 1, shape.name, *bad));
+    }
+    for (std::size_t i = 0; i < shape.mesh.indices.size(); ++i) {
+      const tinyobj::index_t& corner = shape.mesh.indices[i];
+      const auto where = fmt::format("triangle {} of shape '{}'", i / 3 + 1, shape.name);
+      if (outOfRange(corner.vertex_index, positions)) {
+        return badContents(path, fmt::format("{} refers to vertex {}, but the file has {} vertices",
+                                             where, corner.vertex_index + 1, positions));
+      }
+      if (corner.normal_index != -1 && outOfRange(corner.normal_index, normals)) {
+        return badContents(path, fmt::format("{} refers to normal {}, but the file has {} normals",
+                                             where, corner.normal_index + 1, normals));
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// tinyobjloader reports some broken faces only as warnings, after dropping them.
+std::optional<SceneFileFailure> fatalWarning(const Warnings& warnings, const fs::path& path) {
+  for (const std::string& warning : warnings) {
+    if (warning.find("Degenerated face") != std::string::npos) {
+      return badContents(path, "a face has fewer than three vertices and cannot be triangulated");
+    }
+    if (warning.find("invalid vertex index") != std::string::npos ||
+        warning.find("indices out of bounds") != std::string::npos) {
+      return badContents(
+          path, fmt::format("a face index is out of range (tinyobjloader: \"{}\")", warning));
+    }
+  }
+  return std::nullopt;
+}
+
+// Gathers one (shape, material) pair's triangles into a Mesh with deduplicated vertices.
+class MeshBuilder {
+ public:
+  MeshBuilder(const tinyobj::attrib_t& attrib, const fs::path& path)
+      : attrib_(attrib), path_(path) {}
+
+  std::expected<Mesh, SceneFileFailure> build(const tinyobj::shape_t& shape,
+                                              const std::vector<std::uint32_t>& faceMaterials,
+                                              std::uint32_t material, Warnings& warnings) {
+    mesh_ = Mesh{};
+    mesh_.material = material;
+    vertexOf_.clear();
+    firstSourceVertex_.clear();
+    const bool fileNormals = allCornersHaveNormals(shape, faceMaterials, material, warnings);
+    for (std::size_t f = 0; f < faceMaterials.size(); ++f) {
+      if (faceMaterials[f] != material) {
+        continue;
+      }
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (auto failure = addCorner(shape.mesh.indices[3 * f + k], fileNormals)) {
+          return std::unexpected(*failure);
+        }
+      }
+    }
+    if (!fileNormals) {
+      if (auto failure = computeNormals(shape)) {
+        return std::unexpected(*failure);
+      }
+    }
+    return std::move(mesh_);
+  }
+
+ private:
+  bool allCornersHaveNormals(const tinyobj::shape_t& shape,
+                             const std::vector<std::uint32_t>& faceMaterials,
+                             std::uint32_t material, Warnings& warnings) const {
+    std::size_t with = 0;
+    std::size_t without = 0;
+    for (std::size_t f = 0; f < faceMaterials.size(); ++f) {
+      for (std::size_t k = 0; faceMaterials[f] == material && k < 3; ++k) {
+        ++(shape.mesh.indices[3 * f + k].normal_index >= 0 ? with : without);
+      }
+    }
+    if (with > 0 && without > 0) {
+      warnings.push_back(
+          fmt::format("shape '{}': {} of {} face corners have no normal; smooth "
+                      "normals computed for all",
+                      shape.name, without, with + without));
+    }
+    return without == 0;
+  }
+
+  std::optional<SceneFileFailure> addCorner(const tinyobj::index_t& corner, bool fileNormals) {
+    const int normalIndex = fileNormals ? corner.normal_index : -1;
+    const std::uint64_t key =
+        (std::uint64_t{static_cast<std::uint32_t>(corner.vertex_index)} << 32U) |
+        static_cast<std::uint32_t>(normalIndex);
+    const auto [it, inserted] =
+        vertexOf_.try_emplace(key, static_cast<std::uint32_t>(mesh_.positions.size()));
+    mesh_.indices.push_back(it->second);
+    if (!inserted) {
+      return std::nullopt;
+    }
+    mesh_.positions.push_back(
+        vec3At(attrib_.vertices, static_cast<std::size_t>(corner.vertex_index)));
+    firstSourceVertex_.push_back(corner.vertex_index);
+    if (!fileNormals) {
+      return std::nullopt;
+    }
+    const glm::vec3 normal = vec3At(attrib_.normals, static_cast<std::size_t>(normalIndex));
+    if (!(glm::length(normal) > 0.0F)) {
+      return badContents(path_, fmt::format("normal {} has zero length", normalIndex + 1));
+    }
+    mesh_.normals.push_back(glm::normalize(normal));
+    return std::nullopt;
+  }
+
+  std::optional<SceneFileFailure> computeNormals(const tinyobj::shape_t& shape) {
+    auto normals = smoothNormals(mesh_.positions, mesh_.indices);
+    if (!normals) {
+      return badContents(path_, fmt::format("vertex {} of shape '{}' lies only on zero-area "
+                                            "triangles, so its normal is undefined",
+                                            firstSourceVertex_[normals.error()] + 1, shape.name));
+    }
+    mesh_.normals = std::move(*normals);
+    return std::nullopt;
+  }
+
+  const tinyobj::attrib_t& attrib_;
+  const fs::path& path_;
+  Mesh mesh_;
+  std::unordered_map<std::uint64_t, std::uint32_t> vertexOf_;
+  std::vector<int> firstSourceVertex_;  // per mesh vertex: its OBJ position index
+};
+
+// Each face's scene material: its MTL material, or the default one appended after them.
+std::vector<std::uint32_t> faceMaterials(const tinyobj::shape_t& shape, std::size_t mtlCount) {
+  std::vector<std::uint32_t> out;
+  out.reserve(shape.mesh.material_ids.size());
+  for (const int id : shape.mesh.material_ids) {
+    out.push_back(static_cast<std::uint32_t>(
+        outOfRange(id, mtlCount) ? mtlCount : static_cast<std::size_t>(id)));
+  }
+  return out;
+}
+
+std::optional<SceneFileFailure> addShape(const tinyobj::shape_t& shape, MeshBuilder& builder,
+                                         Scene& scene, std::size_t mtlCount, Warnings& warnings) {
+  const auto materials = faceMaterials(shape, mtlCount);
+  std::vector<std::uint32_t> distinct;
+  for (const std::uint32_t m : materials) {
+    if (std::ranges::find(distinct, m) == distinct.end()) {
+      distinct.push_back(m);
+    }
+  }
+  for (const std::uint32_t m : distinct) {
+    auto mesh = builder.build(shape, materials, m, warnings);
+    if (!mesh) {
+      return mesh.error();
+    }
+    if (m == mtlCount && scene.materials.size() == mtlCount) {
+      scene.materials.push_back(defaultFileMaterial());
+    }
+    mesh->name = distinct.size() > 1 ? shape.name + "/" + scene.materials[m].name : shape.name;
+    scene.meshes.push_back(std::move(*mesh));
+  }
+  return std::nullopt;
+}
+
+std::expected<Scene, SceneFileFailure> buildScene(const tinyobj::ObjReader& reader,
+                                                  const fs::path& path, Warnings& warnings) {
+  Scene scene;
+  scene.name = path.string();
+  for (const tinyobj::material_t& mtl : reader.GetMaterials()) {
+    scene.materials.push_back(fromMtl(mtl, warnings));
+  }
+  MeshBuilder builder(reader.GetAttrib(), path);
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    if (auto failure = addShape(shape, builder, scene, reader.GetMaterials().size(), warnings)) {
+      return std::unexpected(*failure);
+    }
+  }
+  if (triangleCount(scene) == 0) {
+    return std::unexpected(badContents(path,
+                                       "the file has no faces, where at least one triangle "
+                                       "was expected"));
+  }
+  if (auto violation = firstContractViolation(scene); !violation.empty()) {
+    return std::unexpected(badContents(path, violation));
+  }
+  return scene;
+}
+
+std::string joined(const Warnings& messages) {
+  return fmt::format("{}", fmt::join(messages, "; "));
+}
+
+}  // namespace
+
+std::expected<LoadedScene, SceneFileFailure> loadObj(const fs::path& path) {
+  if (auto failure = checkReadableFile(path)) {
+    return std::unexpected(*failure);
+  }
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(path.string(), config)) {
+    return std::unexpected(
+        badContents(path, fmt::format("not a valid OBJ file (tinyobjloader: \"{}\")",
+                                      joined(splitMessages(reader.Error())))));
+  }
+  LoadedScene loaded;
+  loaded.warnings = splitMessages(reader.Warning());
+  std::ranges::copy(splitMessages(reader.Error()), std::back_inserter(loaded.warnings));
+  if (auto failure = findBadObjCoordinate(path)) {
+    return std::unexpected(*failure);
+  }
+  if (auto failure = checkFaces(reader, path)) {
+    return std::unexpected(*failure);
+  }
+  if (auto failure = fatalWarning(loaded.warnings, path)) {
+    return std::unexpected(*failure);
+  }
+  auto scene = buildScene(reader, path, loaded.warnings);
+  if (!scene) {
+    return std::unexpected(scene.error());
+  }
+  loaded.scene = std::move(*scene);
+  return loaded;
+}
+
+}  // namespace vem::scene

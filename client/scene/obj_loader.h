@@ -1,0 +1,36 @@
+// The Wavefront OBJ loader (tinyobjloader 2.0): an .obj file and its .mtl materials as a Scene.
+//
+// Conventions:
+// - Positions are taken as they are, in the world frame of scene/scene.h (+Y up, the file's
+//   length unit); faces are counter-clockwise seen from the front, as the OBJ format specifies.
+//   Polygons are triangulated by tinyobjloader (ear clipping).
+// - One Mesh per (OBJ shape, material) pair, named "shape" or "shape/material". Vertices are
+//   deduplicated by (position index, normal index). When any face of a mesh lacks normals, the
+//   whole mesh gets smooth area-weighted normals (scene/mesh_normals.h) and a warning says so
+//   unless no face had any.
+// - Materials (MTL), in the terms of scene/scene.h:
+//     Kd            -> diffuseAlbedo (clamped to [0, 1], with a warning)
+//     Ks > 0, Ns    -> Blinn lobe, specularAlbedo = Ks, exponent = Ns
+//     Pr > 0 (the PBR extension's roughness; tinyobjloader cannot tell "Pr 0" from no Pr)
+//                   -> GGX lobe, roughness = Pr clamped to [0.01, 1],
+//                      specularAlbedo = Ks if Ks > 0, else mix(0.04, Kd, Pm),
+//                      diffuseAlbedo = Kd (1 - Pm)   (Pm: the extension's metallic, default 0)
+//     otherwise     -> Lambertian.
+//   Faces with no material (or no .mtl at all) get the default: Lambertian, 0.8 grey.
+// - Refused (BadContents, one sentence naming the file and the element): tinyobjloader's errors
+//   (with their line), coordinates that are not finite numbers (with their line), face indices
+//   out of range, faces that cannot be triangulated, zero-length normals, vertices whose smooth
+//   normal is undefined, no triangles at all.
+#pragma once
+
+#include <expected>
+#include <filesystem>
+
+#include "client/scene/scene_file_result.h"
+
+namespace vem::scene {
+
+[[nodiscard]] std::expected<LoadedScene, SceneFileFailure> loadObj(
+    const std::filesystem::path& path);
+
+}  // namespace vem::scene

@@ -1,0 +1,213 @@
+// The glTF loader: one-triangle files with an embedded buffer, written here; node transforms,
+// normals, materials and the refusals.
+#include "client/scene/gltf_loader.h"
+
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <cmath>
+#include <limits>
+
+#include <glm/glm.hpp>
+
+#include "scene_test_files.h"
+
+namespace vem::scene {
+namespace {
+
+using test_files::firstHalf;
+using test_files::GltfTriangle;
+using test_files::TempDir;
+using ::testing::HasSubstr;
+
+constexpr float kEps = 1e-5F;
+
+void expectNear(glm::vec3 actual, glm::vec3 expected) {
+  EXPECT_NEAR(actual.x, expected.x, kEps);
+  EXPECT_NEAR(actual.y, expected.y, kEps);
+  EXPECT_NEAR(actual.z, expected.z, kEps);
+}
+
+Scene loadOrFail(const GltfTriangle& triangle) {
+  TempDir dir;
+  auto loaded = loadGltf(dir.write("tri.gltf", triangle.json()));
+  if (!loaded) {
+    ADD_FAILURE() << loaded.error().message;
+    return {};
+  }
+  EXPECT_EQ(firstContractViolation(loaded->scene), "");
+  return std::move(loaded->scene);
+}
+
+std::string refusal(const GltfTriangle& triangle) {
+  TempDir dir;
+  const auto path = dir.write("tri.gltf", triangle.json());
+  auto loaded = loadGltf(path);
+  if (loaded) {
+    ADD_FAILURE() << "the file was loaded, where a refusal was expected";
+    return {};
+  }
+  EXPECT_EQ(loaded.error().error, SceneFileError::BadContents);
+  EXPECT_THAT(loaded.error().message, HasSubstr(path.string()));
+  return loaded.error().message;
+}
+
+TEST(GltfLoader, TriangleRoundTripsPositionsNormalsAndIndices) {
+  const Scene scene = loadOrFail(GltfTriangle{});
+  ASSERT_EQ(scene.meshes.size(), 1U);
+  const Mesh& mesh = scene.meshes[0];
+  ASSERT_EQ(mesh.positions.size(), 3U);
+  EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+  expectNear(mesh.positions[1], {1, 0, 0});
+  expectNear(mesh.normals[2], {0, 0, 1});
+}
+
+TEST(GltfLoader, NodeTranslationMovesPositions) {
+  GltfTriangle triangle;
+  triangle.nodes = R"([{"mesh": 0, "translation": [2, 3, 4]}])";
+  const Scene scene = loadOrFail(triangle);
+  ASSERT_EQ(scene.meshes.size(), 1U);
+  expectNear(scene.meshes[0].positions[0], {2, 3, 4});
+  expectNear(scene.meshes[0].positions[2], {2, 4, 4});
+  expectNear(scene.meshes[0].normals[0], {0, 0, 1});
+}
+
+TEST(GltfLoader, TrsRotationRotatesPositionsAndNormals) {
+  GltfTriangle triangle;  // a quarter turn about +X: +Y goes to +Z, +Z to -Y
+  const double h = std::sqrt(0.5);
+  triangle.nodes = fmt::format(R"([{{"mesh": 0, "rotation": [{}, 0, 0, {}]}}])", h, h);
+  const Scene scene = loadOrFail(triangle);
+  ASSERT_EQ(scene.meshes.size(), 1U);
+  expectNear(scene.meshes[0].positions[2], {0, 0, 1});
+  expectNear(scene.meshes[0].normals[0], {0, -1, 0});
+}
+
+TEST(GltfLoader, ChildTransformsComposeWithTheirParents) {
+  GltfTriangle triangle;
+  const double h = std::sqrt(0.5);
+  triangle.nodes = fmt::format(
+      R"([{{"children": [1], "translation": [0, 5, 0]}}, {{"mesh": 0, "rotation": [{}, 0, 0, {}]}}])",
+      h, h);
+  const Scene scene = loadOrFail(triangle);
+  ASSERT_EQ(scene.meshes.size(), 1U);
+  expectNear(scene.meshes[0].positions[2], {0, 5, 1});  // rotated first, then translated
+}
+
+TEST(GltfLoader, MatrixScaleTransformsNormalsByTheInverseTranspose) {
+  GltfTriangle triangle;  // normal (1, 1, 0) / sqrt 2, stretched twice along y
+  triangle.positions = {{0, 0, 0}, {0, 0, 1}, {1, -1, 0}};
+  const glm::vec3 n = glm::normalize(glm::vec3(1, 1, 0));
+  triangle.normals = {n, n, n};
+  triangle.nodes = R"([{"mesh": 0, "matrix": [1,0,0,0, 0,2,0,0, 0,0,1,0, 0,0,0,1]}])";
+  const Scene scene = loadOrFail(triangle);
+  ASSERT_EQ(scene.meshes.size(), 1U);
+  expectNear(scene.meshes[0].positions[2], {1, -2, 0});
+  expectNear(scene.meshes[0].normals[0], glm::normalize(glm::vec3(2, 1, 0)));
+}
+
+TEST(GltfLoader, MirroringTransformReversesWindingSoFrontsStayCounterClockwise) {
+  GltfTriangle triangle;
+  triangle.nodes = R"([{"mesh": 0, "scale": [-1, 1, 1]}])";
+  const Scene scene = loadOrFail(triangle);
+  ASSERT_EQ(scene.meshes.size(), 1U);
+  const Mesh& mesh = scene.meshes[0];
+  const glm::vec3 a = mesh.positions[mesh.indices[0]];
+  const glm::vec3 geometric =
+      glm::cross(mesh.positions[mesh.indices[1]] - a, mesh.positions[mesh.indices[2]] - a);
+  EXPECT_GT(glm::dot(geometric, mesh.normals[0]), 0.0F);
+}
+
+TEST(GltfLoader, MissingNormalsAreComputedFromTheWinding) {
+  GltfTriangle triangle;
+  triangle.normals.clear();
+  const Scene scene = loadOrFail(triangle);
+  ASSERT_EQ(scene.meshes.size(), 1U);
+  for (const glm::vec3& normal : scene.meshes[0].normals) {
+    expectNear(normal, {0, 0, 1});
+  }
+}
+
+TEST(GltfLoader, RoughDielectricIsLambertian) {
+  const Scene scene = loadOrFail(GltfTriangle{});
+  ASSERT_EQ(scene.materials.size(), 1U);
+  EXPECT_EQ(scene.materials[0].lobe, Lobe::Lambertian);
+  expectNear(scene.materials[0].diffuseAlbedo, {0.5F, 0.6F, 0.7F});
+}
+
+TEST(GltfLoader, SmoothDielectricIsGgxWithF0Of4Percent) {
+  GltfTriangle triangle;
+  triangle.roughness = 0.5;
+  const Scene scene = loadOrFail(triangle);
+  ASSERT_EQ(scene.materials.size(), 1U);
+  EXPECT_EQ(scene.materials[0].lobe, Lobe::Ggx);
+  EXPECT_FLOAT_EQ(scene.materials[0].roughness, 0.5F);
+  expectNear(scene.materials[0].specularAlbedo, glm::vec3(0.04F));
+  expectNear(scene.materials[0].diffuseAlbedo, {0.5F, 0.6F, 0.7F});
+}
+
+TEST(GltfLoader, MetalHasItsColourInTheSpecularLobeAndNoDiffuse) {
+  GltfTriangle triangle;
+  triangle.metallic = 1.0;
+  const Scene scene = loadOrFail(triangle);
+  ASSERT_EQ(scene.materials.size(), 1U);
+  EXPECT_EQ(scene.materials[0].lobe, Lobe::Ggx);
+  expectNear(scene.materials[0].specularAlbedo, {0.5F, 0.6F, 0.7F});
+  expectNear(scene.materials[0].diffuseAlbedo, glm::vec3(0.0F));
+}
+
+TEST(GltfLoaderRefuses, AMissingFileAsNotFound) {
+  TempDir dir;
+  const auto path = dir.path() / "absent.gltf";
+  const auto loaded = loadGltf(path);
+  ASSERT_FALSE(loaded);
+  EXPECT_EQ(loaded.error().error, SceneFileError::NotFound);
+  EXPECT_THAT(loaded.error().message, HasSubstr(path.string()));
+}
+
+TEST(GltfLoaderRefuses, ATruncatedFile) {
+  TempDir dir;
+  const auto path = dir.write("cut.gltf", firstHalf(GltfTriangle{}.json()));
+  const auto loaded = loadGltf(path);
+  ASSERT_FALSE(loaded);
+  EXPECT_EQ(loaded.error().error, SceneFileError::BadContents);
+  EXPECT_THAT(loaded.error().message, HasSubstr(path.string()));
+  EXPECT_THAT(loaded.error().message, HasSubstr("not a valid glTF 2.0 file"));
+}
+
+TEST(GltfLoaderRefuses, AnAccessorPastTheEndOfItsBuffer) {
+  GltfTriangle triangle;
+  triangle.positionCount = 30;
+  EXPECT_THAT(refusal(triangle), HasSubstr("accessor 0 (30 elements of 12 bytes from byte 0) runs "
+                                           "past the end of buffer view 0"));
+}
+
+TEST(GltfLoaderRefuses, AnIndexPastTheVertexCount) {
+  GltfTriangle triangle;
+  triangle.indices = {0, 1, 7};
+  EXPECT_THAT(refusal(triangle), HasSubstr("index 2 is 7, but there are only 3 vertices"));
+}
+
+TEST(GltfLoaderRefuses, ANanPosition) {
+  GltfTriangle triangle;
+  triangle.positions[1].y = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THAT(refusal(triangle), HasSubstr("mesh 0 ('tri') primitive 0: position 1 is not finite"));
+}
+
+TEST(GltfLoaderRefuses, LinePrimitives) {
+  GltfTriangle triangle;
+  triangle.mode = 1;
+  EXPECT_THAT(refusal(triangle), HasSubstr("mode 1 is not supported, where 4 (triangles)"));
+}
+
+TEST(GltfLoaderRefuses, APrimitiveWithoutPositions) {
+  GltfTriangle triangle;
+  std::string json = triangle.json();
+  json.replace(json.find(R"("POSITION": 0, )"), 15, "");
+  TempDir dir;
+  const auto loaded = loadGltf(dir.write("nopos.gltf", json));
+  ASSERT_FALSE(loaded);
+  EXPECT_THAT(loaded.error().message, HasSubstr("has no POSITION attribute"));
+}
+
+}  // namespace
+}  // namespace vem::scene

@@ -1,0 +1,220 @@
+// The OBJ loader: round trips of files written here, normals, MTL lobes, and its refusals.
+#include "client/scene/obj_loader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include "client/scene/default_scene.h"
+#include "scene_test_files.h"
+
+namespace vem::scene {
+namespace {
+
+using test_files::cubeObj;
+using test_files::firstHalf;
+using test_files::TempDir;
+using ::testing::HasSubstr;
+
+constexpr float kEps = 1e-5F;
+
+void expectNear(glm::vec3 actual, glm::vec3 expected, float tolerance = kEps) {
+  EXPECT_NEAR(actual.x, expected.x, tolerance);
+  EXPECT_NEAR(actual.y, expected.y, tolerance);
+  EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+LoadedScene loadOrFail(const std::filesystem::path& path) {
+  auto loaded = loadObj(path);
+  if (!loaded) {
+    ADD_FAILURE() << loaded.error().message;
+    return {};
+  }
+  return std::move(*loaded);
+}
+
+SceneFileFailure refusal(const std::filesystem::path& path) {
+  auto loaded = loadObj(path);
+  if (loaded) {
+    ADD_FAILURE() << path << " was loaded, where a refusal was expected";
+    return {};
+  }
+  EXPECT_THAT(loaded.error().message, HasSubstr(path.string()));
+  return loaded.error();
+}
+
+TEST(ObjLoader, CubeRoundTripKeepsPositionsAndTriangulatesQuads) {
+  TempDir dir;
+  const LoadedScene loaded = loadOrFail(dir.write("cube.obj", cubeObj(false)));
+  ASSERT_EQ(loaded.scene.meshes.size(), 1U);
+  const Mesh& mesh = loaded.scene.meshes[0];
+  EXPECT_EQ(mesh.triangleCount(), 12U);
+  EXPECT_EQ(mesh.positions.size(), 8U);  // deduplicated by position when there are no normals
+  for (const glm::vec3& p : mesh.positions) {
+    expectNear(glm::abs(p), glm::vec3(0.5F));
+  }
+  EXPECT_EQ(firstContractViolation(loaded.scene), "");
+}
+
+TEST(ObjLoader, ComputedCubeNormalsAreUnitAndPointOutward) {
+  TempDir dir;
+  const LoadedScene loaded = loadOrFail(dir.write("cube.obj", cubeObj(false)));
+  ASSERT_EQ(loaded.scene.meshes.size(), 1U);
+  const Mesh& mesh = loaded.scene.meshes[0];
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    EXPECT_NEAR(glm::length(mesh.normals[i]), 1.0F, kEps);
+    // Near the diagonal through the corner (not on it: the quads' diagonals break the symmetry).
+    EXPECT_GT(glm::dot(mesh.normals[i], glm::normalize(mesh.positions[i])), 0.9F);
+  }
+}
+
+TEST(ObjLoader, FileNormalsSplitVerticesByPositionAndNormalIndex) {
+  TempDir dir;
+  const LoadedScene loaded = loadOrFail(dir.write("cube.obj", cubeObj(true)));
+  ASSERT_EQ(loaded.scene.meshes.size(), 1U);
+  const Mesh& mesh = loaded.scene.meshes[0];
+  EXPECT_EQ(mesh.positions.size(), 24U);  // each corner once per face meeting there
+  for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const glm::vec3 a = mesh.positions[mesh.indices[3 * t]];
+    const glm::vec3 b = mesh.positions[mesh.indices[3 * t + 1]];
+    const glm::vec3 c = mesh.positions[mesh.indices[3 * t + 2]];
+    const glm::vec3 faceNormal = glm::normalize(glm::cross(b - a, c - a));
+    for (std::size_t k = 0; k < 3; ++k) {
+      expectNear(mesh.normals[mesh.indices[3 * t + k]], faceNormal);
+    }
+  }
+}
+
+TEST(ObjLoader, ComputedNormalsOfAFlatQuadAreItsPlaneNormal) {
+  TempDir dir;
+  const auto path = dir.write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 1\nv 0 1 1\nf 1 2 3 4\n");
+  const LoadedScene loaded = loadOrFail(path);
+  ASSERT_EQ(loaded.scene.meshes.size(), 1U);
+  for (const glm::vec3& n : loaded.scene.meshes[0].normals) {
+    expectNear(n, glm::normalize(glm::vec3(0, -1, 1)));
+  }
+}
+
+TEST(ObjLoader, ComputedNormalsAreAreaWeighted) {
+  // Vertex 1 is shared by a large triangle facing +Z and a small one facing +X.
+  TempDir dir;
+  const auto path = dir.write("fan.obj",
+                              "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0 0 -0.1\nv 0 0.1 0\n"
+                              "f 1 2 3\nf 1 4 5\n");
+  const LoadedScene loaded = loadOrFail(path);
+  ASSERT_EQ(loaded.scene.meshes.size(), 1U);
+  const Mesh& mesh = loaded.scene.meshes[0];
+  // Areas 2 and 0.005: the normal leans 0.0025 rad from +Z towards +X.
+  expectNear(mesh.normals[mesh.indices[0]], glm::normalize(glm::vec3(0.0025F, 0, 1)), 1e-4F);
+}
+
+TEST(ObjLoader, MtlMaterialsBecomeLambertianBlinnAndGgxLobes) {
+  TempDir dir;
+  dir.write("paints.mtl",
+            "newmtl matte\nKd 0.5 0.4 0.3\nKs 0 0 0\n"
+            "newmtl shiny\nKd 0.2 0.2 0.2\nKs 0.3 0.3 0.3\nNs 50\n"
+            "newmtl rough\nKd 0.6 0.6 0.6\nKs 0 0 0\nPr 0.4\n");
+  const auto path = dir.write("three.obj",
+                              "mtllib paints.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                              "o tri\nusemtl matte\nf 1 2 3\nusemtl shiny\nf 1 2 3\n"
+                              "usemtl rough\nf 1 2 3\n");
+  const LoadedScene loaded = loadOrFail(path);
+  ASSERT_EQ(loaded.scene.meshes.size(), 3U);  // one per (shape, material) pair
+  const auto materialOf = [&](std::size_t mesh) {
+    return loaded.scene.materials.at(loaded.scene.meshes[mesh].material);
+  };
+  EXPECT_EQ(materialOf(0).lobe, Lobe::Lambertian);
+  expectNear(materialOf(0).diffuseAlbedo, {0.5F, 0.4F, 0.3F});
+  EXPECT_EQ(materialOf(1).lobe, Lobe::Blinn);
+  EXPECT_FLOAT_EQ(materialOf(1).exponent, 50.0F);
+  expectNear(materialOf(1).specularAlbedo, glm::vec3(0.3F));
+  EXPECT_EQ(materialOf(2).lobe, Lobe::Ggx);
+  EXPECT_FLOAT_EQ(materialOf(2).roughness, 0.4F);
+  expectNear(materialOf(2).specularAlbedo, glm::vec3(0.04F));
+}
+
+TEST(ObjLoader, NoMtlGivesOneDefaultGreyLambertian) {
+  TempDir dir;
+  const LoadedScene loaded = loadOrFail(dir.write("cube.obj", cubeObj(false)));
+  ASSERT_EQ(loaded.scene.materials.size(), 1U);
+  EXPECT_EQ(loaded.scene.materials[0].lobe, Lobe::Lambertian);
+  expectNear(loaded.scene.materials[0].diffuseAlbedo, glm::vec3(0.8F));
+}
+
+TEST(ObjLoader, SharedBunnyLoadsWith3674Triangles) {
+  const LoadedScene loaded = loadOrFail(defaultBunnyPath());
+  EXPECT_EQ(triangleCount(loaded.scene), 3674U);
+  EXPECT_EQ(firstContractViolation(loaded.scene), "");
+}
+
+TEST(ObjLoaderRefuses, AMissingFileAsNotFound) {
+  TempDir dir;
+  const auto failure = refusal(dir.path() / "absent.obj");
+  EXPECT_EQ(failure.error, SceneFileError::NotFound);
+  EXPECT_THAT(failure.message, HasSubstr("does not exist"));
+}
+
+TEST(ObjLoaderRefuses, ATruncatedFile) {
+  TempDir dir;
+  const auto failure = refusal(dir.write("cut.obj", firstHalf(cubeObj(false))));
+  EXPECT_EQ(failure.error, SceneFileError::BadContents);
+  // Cut inside the vertex list: a short line, or vertices and no faces.
+  EXPECT_THAT(failure.message, ::testing::AnyOf(HasSubstr("coordinates where 3 were expected"),
+                                                HasSubstr("no faces")));
+}
+
+TEST(ObjLoaderRefuses, AFaceIndexOutOfRange) {
+  TempDir dir;
+  const auto failure = refusal(dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"));
+  EXPECT_EQ(failure.error, SceneFileError::BadContents);
+  EXPECT_THAT(failure.message, HasSubstr("refers to vertex 9, but the file has 3 vertices"));
+}
+
+TEST(ObjLoaderRefuses, AQuadIndexOutOfRangeThatTinyobjDropsSilently) {
+  TempDir dir;
+  const auto failure =
+      refusal(dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 1 2 3 7\n"));
+  EXPECT_THAT(failure.message, HasSubstr("out of range"));
+}
+
+TEST(ObjLoaderRefuses, ANanVertexWithItsLine) {
+  TempDir dir;
+  const auto failure = refusal(dir.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_THAT(failure.message, HasSubstr("line 2: vertex coordinate 'nan' is not a finite number"));
+}
+
+TEST(ObjLoaderRefuses, AnInfiniteNormal) {
+  TempDir dir;
+  const auto failure =
+      refusal(dir.write("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 inf 1\nf 1//1 2//1 3//1\n"));
+  EXPECT_THAT(failure.message, HasSubstr("line 4: normal coordinate 'inf'"));
+}
+
+TEST(ObjLoaderRefuses, AFaceOfTwoVertices) {
+  TempDir dir;
+  const auto failure = refusal(dir.write("two.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2\n"));
+  EXPECT_THAT(failure.message, HasSubstr("cannot be triangulated"));
+}
+
+TEST(ObjLoaderRefuses, AZeroLengthNormal) {
+  TempDir dir;
+  const auto failure =
+      refusal(dir.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n"));
+  EXPECT_THAT(failure.message, HasSubstr("normal 1 has zero length"));
+}
+
+TEST(ObjLoaderRefuses, AVertexOnlyOnZeroAreaTriangles) {
+  TempDir dir;
+  const auto failure = refusal(dir.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n"));
+  EXPECT_THAT(failure.message, HasSubstr("normal is undefined"));
+}
+
+TEST(ObjLoaderRefuses, AFileWithNoTriangles) {
+  TempDir dir;
+  const auto failure = refusal(dir.write("empty.obj", "v 0 0 0\nv 1 0 0\n"));
+  EXPECT_THAT(failure.message, HasSubstr("no faces"));
+}
+
+}  // namespace
+}  // namespace vem::scene
