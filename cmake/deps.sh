@@ -10,7 +10,7 @@ packages=(
   libsystemd-dev
   libaravis-dev libusb-1.0-0-dev aravis-tools libcamera-dev v4l-utils iproute2 util-linux openssl
   libembree-dev libglfw3-dev libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libegl-mesa0
-  libtinyobjloader-dev libtinygltf-dev xvfb xauth
+  libtinyobjloader-dev libtinygltf-dev xvfb xauth librsvg2-bin
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-14 libclang-rt-14-dev
 )

@@ -42,8 +42,10 @@ std::expected<void, std::string> saveSrgbPng(std::span<const std::uint8_t> srgb8
     return std::unexpected(fmt::format("{}: cannot encode the PNG ({})", path.string(), e.what()));
   }
   if (auto done = mapio::detail::replaceFileAtomically(path, bytes); !done) {
-    return std::unexpected(fmt::format("{}: cannot write the PNG ({}), so any earlier file there "
-                                       "is unchanged", path.string(), done.error()));
+    return std::unexpected(
+        fmt::format("{}: cannot write the PNG ({}), so any earlier file there "
+                    "is unchanged",
+                    path.string(), done.error()));
   }
   return {};
 }
@@ -53,7 +55,8 @@ std::expected<Srgb8Image, std::string> loadSrgb8(const std::filesystem::path& pa
   try {
     bgr = cv::imread(path.string(), cv::IMREAD_COLOR);
   } catch (const cv::Exception& e) {
-    return std::unexpected(fmt::format("{}: cannot read the picture ({})", path.string(), e.what()));
+    return std::unexpected(
+        fmt::format("{}: cannot read the picture ({})", path.string(), e.what()));
   }
   if (bgr.empty()) {
     return std::unexpected(fmt::format("{}: not a readable picture", path.string()));

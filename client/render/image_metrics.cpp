@@ -1,9 +1,9 @@
 #include "client/render/image_metrics.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fmt/format.h>
 
 #include "core/color.h"
 
@@ -13,7 +13,8 @@ double ImageError::fractionAbove(double threshold) const {
   if (pixelRelative.empty()) {
     return 0.0;
   }
-  const auto above = std::ranges::count_if(pixelRelative, [&](float e) { return double(e) > threshold; });
+  const auto above =
+      std::ranges::count_if(pixelRelative, [&](float e) { return double(e) > threshold; });
   return double(above) / double(pixelRelative.size());
 }
 

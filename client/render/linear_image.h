@@ -17,8 +17,8 @@ namespace vem::render {
 struct LinearImage {
   int widthPx = 0;
   int heightPx = 0;
-  std::vector<float> rgb;              // widthPx * heightPx * 3
-  std::vector<std::uint8_t> covered;   // widthPx * heightPx
+  std::vector<float> rgb;             // widthPx * heightPx * 3
+  std::vector<std::uint8_t> covered;  // widthPx * heightPx
 
   [[nodiscard]] static LinearImage black(int widthPx, int heightPx);
   [[nodiscard]] std::size_t pixelCount() const {

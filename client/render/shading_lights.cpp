@@ -18,6 +18,12 @@ LightSet prefixOf(const LightSet& lights, std::size_t count) {
   prefix.black = lights.black;
   const std::size_t n = std::min(count, lights.lights.size());
   prefix.lights.assign(lights.lights.begin(), lights.lights.begin() + std::ptrdiff_t(n));
+  // Each of the set's lights carries an equal share of its power (core/light_generator.h), so the
+  // n-light set has the same directions with shares size / n times larger.
+  const float scale = n == 0 ? 1.0F : float(double(lights.lights.size()) / double(n));
+  for (Light& light : prefix.lights) {
+    light.rgb *= scale;
+  }
   return prefix;
 }
 

@@ -3,10 +3,12 @@
 // sections 4 and 5.2).
 //
 // - diffuse: the first lightCount lights of the set (a prefix is a good set: the progressive
-//   property), or, with clustering, their clusters (section 4.3, core/light_clustering.h). These
-//   light the diffuse term of every surface (and the specular term when the scene has no glossy
-//   pass). diffuseLists: their angular-region lists with reach pi/2 (section 4.1), empty when
-//   regions are off (every light is then walked, and n . dir decides).
+//   property), rescaled by size / lightCount so that they carry the whole power as the
+//   lightCount-light set of the generator does (each light an equal share), or, with clustering,
+//   their clusters (section 4.3, core/light_clustering.h). These light the diffuse term of every
+//   surface (and the specular term when the scene has no glossy pass). diffuseLists: their
+//   angular-region lists with reach pi/2 (section 4.1), empty when regions are off (every light is
+//   then walked, and n . dir decides).
 // - glossy (only when the plan has a glossy pass): L = the first lightCount lights unclustered,
 //   H = its first highCount lights rescaled, and their region lists (section 4.2,
 //   core/glossy_light_sets.h). The specular term of glossy surfaces walks these.
@@ -56,7 +58,7 @@ struct ShadingLights {
   LightSet diffuse;
   RegionLightLists diffuseLists;
   std::optional<GlossyLightSets> glossy;
-  std::vector<std::uint32_t> shadowCasters;     // indices into diffuse.lights, by slot
+  std::vector<std::uint32_t> shadowCasters;       // indices into diffuse.lights, by slot
   std::vector<std::int32_t> shadowSlotOfDiffuse;  // one per diffuse light
   std::vector<std::int32_t> shadowSlotOfLow;      // one per glossy->low light (empty without)
   std::size_t maxConeLights = 216;

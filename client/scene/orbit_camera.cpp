@@ -54,8 +54,8 @@ OrbitCamera viewingCamera(const Scene& scene, float azimuthRad, float elevationR
       objects.meshes.push_back(mesh);
     }
   }
-  OrbitCamera camera =
-      framingCamera(sceneBounds(objects.meshes.empty() ? scene : objects), azimuthRad, elevationRad);
+  OrbitCamera camera = framingCamera(sceneBounds(objects.meshes.empty() ? scene : objects),
+                                     azimuthRad, elevationRad);
   const float sceneRadius = sceneBounds(scene).radius();
   camera.farPlane = camera.distance + 2.0F * sceneRadius;
   camera.nearPlane = std::max(0.02F * camera.distance, camera.distance - 2.0F * sceneRadius);

@@ -53,7 +53,8 @@ Mesh boxMesh(glm::vec3 min, glm::vec3 max, std::uint32_t material) {
   const glm::vec3 half = 0.5F * (max - min);
   for (const auto& [n, u, v] : faces) {
     const auto base = std::uint32_t(mesh.positions.size());
-    for (const glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+    for (const glm::vec2 c :
+         {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
       mesh.positions.push_back(centre + half * (n + c.x * u + c.y * v));
       mesh.normals.push_back(n);
     }
@@ -67,8 +68,10 @@ Mesh groundPlane(float height, float size, float cx, float cz, std::uint32_t mat
   mesh.name = "ground";
   mesh.material = material;
   const float h = 0.5F * size;
-  mesh.positions = {{cx - h, height, cz - h}, {cx - h, height, cz + h},
-                    {cx + h, height, cz + h}, {cx + h, height, cz - h}};
+  mesh.positions = {{cx - h, height, cz - h},
+                    {cx - h, height, cz + h},
+                    {cx + h, height, cz + h},
+                    {cx + h, height, cz - h}};
   mesh.normals.assign(4, glm::vec3(0, 1, 0));
   mesh.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise seen from +Y
   return mesh;

@@ -1,8 +1,8 @@
 #include "client/scene/scene.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <glm/glm.hpp>
 #include <limits>
 
@@ -10,7 +10,7 @@ namespace vem::scene {
 namespace {
 
 constexpr float kUnitTolerance = 1e-3F;
-constexpr float kConvexTolerance = 1e-4F;       // of the scene's radius
+constexpr float kConvexTolerance = 1e-4F;              // of the scene's radius
 constexpr std::size_t kMaxConvexityTriangles = 20000;  // larger meshes are assumed non-convex
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -81,7 +81,8 @@ std::string meshViolation(const Mesh& mesh, std::size_t index, std::size_t mater
     if (!finite(mesh.positions[i])) {
       return fmt::format("{}: position {} is not finite", where, i);
     }
-    if (!finite(mesh.normals[i]) || std::abs(glm::length(mesh.normals[i]) - 1.0F) > kUnitTolerance) {
+    if (!finite(mesh.normals[i]) ||
+        std::abs(glm::length(mesh.normals[i]) - 1.0F) > kUnitTolerance) {
       return fmt::format("{}: normal {} is not a finite unit vector", where, i);
     }
   }

@@ -8,12 +8,20 @@
 
 namespace vem::bench {
 namespace {
-constexpr double kWidth = 640, kHeight = 420, kLeft = 80, kRight = 20, kTop = 20, kBottom = 60;
-const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+constexpr double kLeft = 80, kRight = 20, kTop = 20, kBottom = 60;
+constexpr double kLegendCharPx = 7;  // about the width of a 12 px sans-serif character
+const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
+                                "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+constexpr std::size_t kColourCount = sizeof(kColours) / sizeof(kColours[0]);
 }  // namespace
 
 void writeLogLogSvg(const std::filesystem::path& path, const std::string& xLabel,
-                    const std::string& yLabel, const std::vector<PlotSeries>& series) {
+                    const std::string& yLabel, const std::vector<PlotSeries>& series,
+                    PlotCanvas canvas) {
+  const double kWidth = canvas.widthPx, kHeight = canvas.heightPx;
+  std::size_t longestName = 0;
+  for (const auto& s : series) longestName = std::max(longestName, s.name.size());
+  const double legendX = kWidth - kRight - kLegendCharPx * double(longestName);
   double x0 = 1e300, x1 = 0, y0 = 1e300, y1 = 0;
   for (const auto& s : series)
     for (auto [x, y] : s.points) {
@@ -51,7 +59,7 @@ void writeLogLogSvg(const std::filesystem::path& path, const std::string& xLabel
   for (std::size_t i = 0; i < series.size(); ++i) {
     std::string points;
     for (auto [x, y] : series[i].points) points += fmt::format("{:.1f},{:.1f} ", px(x), py(y));
-    const char* colour = kColours[i % 4];
+    const char* colour = kColours[i % kColourCount];
     out << fmt::format("<polyline points='{}' fill='none' stroke='{}' stroke-width='2'/>\n", points,
                        colour);
     for (std::size_t k = 0; k < series[i].points.size(); ++k) {
@@ -62,7 +70,7 @@ void writeLogLogSvg(const std::filesystem::path& path, const std::string& xLabel
         out << fmt::format("<text x='{:.1f}' y='{:.1f}' fill='{}' font-size='10'>{}</text>\n",
                            px(x) + 6, py(y) + (i == 0 ? -6 : 14), colour, series[i].labels[k]);
     }
-    out << fmt::format("<text x='{}' y='{}' fill='{}'>{}</text>\n", kWidth - kRight - 120,
+    out << fmt::format("<text x='{}' y='{}' fill='{}'>{}</text>\n", legendX,
                        kTop + 16 + 16 * double(i), colour, series[i].name);
   }
   out << "</svg>\n";

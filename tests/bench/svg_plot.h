@@ -15,7 +15,15 @@ struct PlotSeries {
   std::vector<std::string> labels;                // optional, one per point (e.g. "N=64")
 };
 
+// The canvas in SVG pixels; the legend sits in the top right corner.
+struct PlotCanvas {
+  double widthPx = 640;
+  double heightPx = 420;
+};
+
+// Up to 8 series get distinct colours (then they repeat).
 void writeLogLogSvg(const std::filesystem::path& path, const std::string& xLabel,
-                    const std::string& yLabel, const std::vector<PlotSeries>& series);
+                    const std::string& yLabel, const std::vector<PlotSeries>& series,
+                    PlotCanvas canvas = {});
 
 }  // namespace vem::bench

@@ -23,7 +23,8 @@ const LightingGeometry& geometry() {
 }
 
 TEST(ShadingLights, PrefixKeepsTheFirstNLightsInOrder) {
-  const LightSet set = lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 1}, {{0, 1, 1}, 1}, {{-1, 1, 0}, 1}});
+  const LightSet set =
+      lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 1}, {{0, 1, 1}, 1}, {{-1, 1, 0}, 1}});
   LightingOptions options;
   options.lightCount = 2;
   const ShadingLights s = buildShadingLights(set, geometry(), options);
@@ -32,8 +33,20 @@ TEST(ShadingLights, PrefixKeepsTheFirstNLightsInOrder) {
   EXPECT_EQ(s.diffuse.lights[1].id, 1U);
 }
 
+TEST(ShadingLights, PrefixCarriesTheWholePowerLikeTheNLightSet) {
+  const LightSet set =
+      lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 1}, {{0, 1, 1}, 1}, {{-1, 1, 0}, 1}});
+  LightingOptions options;
+  options.lightCount = 1;
+  EXPECT_FLOAT_EQ(buildShadingLights(set, geometry(), options).diffuse.lights[0].rgb.x, 4.0F);
+  options.lightCount = 2;
+  const ShadingLights s = buildShadingLights(set, geometry(), options);
+  EXPECT_FLOAT_EQ(s.diffuse.lights[0].rgb.x + s.diffuse.lights[1].rgb.x, 4.0F);
+}
+
 TEST(ShadingLights, ShadowCastersAreTheBrightestLightsNotTheFirst) {
-  const LightSet set = lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 9}, {{0, 1, 1}, 2}, {{-1, 1, 0}, 5}});
+  const LightSet set =
+      lightsAlong({{{0, 1, 0}, 1}, {{1, 1, 0}, 9}, {{0, 1, 1}, 2}, {{-1, 1, 0}, 5}});
   LightingOptions options;
   options.lightCount = 4;
   options.shadowedCount = 2;
@@ -44,8 +57,8 @@ TEST(ShadingLights, ShadowCastersAreTheBrightestLightsNotTheFirst) {
 }
 
 TEST(ShadingLights, UnshadowedLightTakesTheMapOfTheNearestCaster) {
-  const LightSet set =
-      lightsAlong({{{1, 0.2F, 0}, 5}, {{-1, 0.2F, 0}, 5}, {{0.9F, 0.4F, 0.1F}, 1}, {{-1, 0.5F, 0}, 1}});
+  const LightSet set = lightsAlong(
+      {{{1, 0.2F, 0}, 5}, {{-1, 0.2F, 0}, 5}, {{0.9F, 0.4F, 0.1F}, 1}, {{-1, 0.5F, 0}, 1}});
   LightingOptions options;
   options.lightCount = 4;
   options.shadowedCount = 2;

@@ -1,7 +1,7 @@
 #include "client/render/tone_mapping.h"
 
-#include <cmath>
 #include <gtest/gtest.h>
+#include <cmath>
 #include <limits>
 
 namespace vem::render {
