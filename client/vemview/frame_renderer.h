@@ -1,0 +1,53 @@
+// FrameRenderer: one of vemview's three ways of drawing a frame, behind one interface so the loop
+// does not care which (viewer_options.h --renderer):
+// - gl: the OpenGL renderer (client/gl): shadow-map atlas, angular regions, glossy L/H, in a
+//   window or headless (EGL);
+// - embree: the same lights, ray-traced shadows (client/embree);
+// - reference: Monte Carlo over the whole environment map until converged (client/embree), the
+//   ground truth; needs the map (--map).
+// Times in ms, measured on the CPU's steady clock around work that has finished (GL: glFinish).
+#pragma once
+
+#include <expected>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "client/render/linear_image.h"
+#include "client/render/shading_lights.h"
+#include "client/render/tone_mapping.h"
+#include "client/scene/orbit_camera.h"
+#include "client/scene/scene.h"
+#include "client/vemview/light_input.h"
+#include "client/vemview/render_plan.h"
+#include "client/vemview/viewer_options.h"
+
+namespace vem::view {
+
+struct RenderedFrame {
+  render::LinearImage image;
+  double renderMs = 0.0;          // the renderer's whole frame, readback included
+  nlohmann::ordered_json timing;  // its own figures (pass times, maps rendered/reused...)
+};
+
+class FrameRenderer {
+ public:
+  virtual ~FrameRenderer() = default;
+  [[nodiscard]] virtual std::string name() const = 0;  // "OpenGL (llvmpipe, software)", ...
+  [[nodiscard]] virtual RenderedFrame render(const scene::OrbitCamera& camera,
+                                             const render::ShadingLights& lights,
+                                             const InputFrame& input) = 0;
+  // Shows the last frame tone-mapped, with `overlay` text lines (windows only).
+  virtual void present(const render::ToneParams& /*tone*/, const std::string& /*overlay*/) {}
+  // False once the user closed the window.
+  [[nodiscard]] virtual bool open() { return true; }
+  // Mouse-drag orbit since the last call, radians (windows only).
+  [[nodiscard]] virtual float takeOrbitDragRad() { return 0.0F; }
+};
+
+[[nodiscard]] std::expected<std::unique_ptr<FrameRenderer>, std::string> makeFrameRenderer(
+    const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
+    const render::LightingGeometry& geometry);
+
+}  // namespace vem::view

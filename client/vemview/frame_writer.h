@@ -1,0 +1,48 @@
+// FrameWriter: vemview's headless output in --out DIR: each drawn frame as frame-NNNNNN.png
+// (tone-mapped, 8-bit sRGB) and frame-NNNNNN.exr (linear radiance, 32-bit float), and one JSON line
+// per frame in timing.jsonl (times in ms). A frame the plan did not redraw (nothing changed) gets
+// its timing line ("drawn": false) and no picture: the last picture stands. Files are
+// written atomically; the first failure is returned as one sentence and stops the run.
+#pragma once
+
+#include <cstdint>
+#include <expected>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "client/render/linear_image.h"
+#include "client/render/tone_mapping.h"
+
+namespace vem::view {
+
+struct FrameRecord {
+  std::uint64_t frame = 0;
+  std::uint64_t inputSeq = 0;
+  bool drawn = true;
+  nlohmann::ordered_json timing;  // the renderer's own figures, merged into the line
+};
+
+class FrameWriter {
+ public:
+  [[nodiscard]] static std::expected<FrameWriter, std::string> open(
+      const std::filesystem::path& folder, bool png, bool exr);
+  [[nodiscard]] std::expected<void, std::string> write(const FrameRecord& record,
+                                                       const render::LinearImage& image,
+                                                       const render::ToneParams& tone);
+  [[nodiscard]] const std::filesystem::path& folder() const { return folder_; }
+  [[nodiscard]] std::filesystem::path lastPng() const { return lastPng_; }
+
+ private:
+  FrameWriter(std::filesystem::path folder, bool png, bool exr, std::ofstream timing)
+      : folder_(std::move(folder)), png_(png), exr_(exr), timing_(std::move(timing)) {}
+  std::filesystem::path folder_;
+  bool png_;
+  bool exr_;
+  std::ofstream timing_;
+  std::filesystem::path lastPng_;
+};
+
+}  // namespace vem::view

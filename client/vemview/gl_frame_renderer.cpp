@@ -1,0 +1,114 @@
+#include "client/vemview/gl_frame_renderer.h"
+
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "client/gl/gl_context.h"
+#include "client/gl/gl_renderer.h"
+#include "client/render/image_files.h"
+
+namespace vem::view {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+class GlFrameRenderer final : public FrameRenderer {
+ public:
+  GlFrameRenderer(const ViewerOptions& options, std::unique_ptr<gl::GlContext> context,
+                  std::unique_ptr<gl::GlRenderer> renderer)
+      : options_(options), context_(std::move(context)), renderer_(std::move(renderer)) {}
+
+  ~GlFrameRenderer() override {
+    if (!options_.screenshot.empty() && context_->isWindow()) {
+      saveScreenshot();
+    }
+  }
+  GlFrameRenderer(const GlFrameRenderer&) = delete;
+  GlFrameRenderer& operator=(const GlFrameRenderer&) = delete;
+
+  std::string name() const override {
+    return fmt::format("OpenGL {} on {}{}", context_->versionString(), context_->timingLabel(),
+                       context_->isWindow() ? ", window" : ", headless (EGL)");
+  }
+
+  RenderedFrame render(const scene::OrbitCamera& camera, const render::ShadingLights& lights,
+                       const InputFrame& input) override {
+    const auto start = std::chrono::steady_clock::now();
+    const gl::GlFrameStats stats =
+        renderer_->render(camera, lights, input.cube.get(), input.cubeVersion);
+    RenderedFrame frame;
+    const auto readStart = std::chrono::steady_clock::now();
+    frame.image = renderer_->readLinear();
+    frame.renderMs = msSince(start);
+    frame.timing["shadow_pass_ms"] = stats.shadowPassMs;
+    frame.timing["lighting_pass_ms"] = stats.lightingPassMs;
+    frame.timing["gl_total_ms"] = stats.totalMs;
+    frame.timing["readback_ms"] = msSince(readStart);
+    frame.timing["shadow_maps_rendered"] = stats.shadowMapsRendered;
+    frame.timing["shadow_maps_reused"] = stats.shadowMapsReused;
+    frame.timing["cube_map_uploaded"] = stats.backgroundUploaded;
+    return frame;
+  }
+
+  void present(const render::ToneParams& tone, const std::string& overlay) override {
+    if (!context_->isWindow()) {
+      return;
+    }
+    renderer_->presentToneMapped(tone);
+    if (!options_.screenshot.empty()) {
+      lastDisplay_ = renderer_->readDisplaySrgb8();  // the back buffer, before the swap
+    }
+    (void)overlay;
+    context_->swapBuffers();
+    context_->pollEvents();
+  }
+
+  bool open() override { return !context_->shouldClose(); }
+
+ private:
+  void saveScreenshot() {
+    if (lastDisplay_.empty()) {
+      return;
+    }
+    if (auto saved = render::saveSrgbPng(lastDisplay_, renderer_->widthPx(),
+                                         renderer_->heightPx(), options_.screenshot);
+        !saved) {
+      fmt::print(stderr, "vemview: error: {}\n", saved.error());
+    }
+  }
+
+  const ViewerOptions& options_;
+  std::unique_ptr<gl::GlContext> context_;
+  std::unique_ptr<gl::GlRenderer> renderer_;
+  std::vector<std::uint8_t> lastDisplay_;
+};
+
+}  // namespace
+
+std::expected<std::unique_ptr<FrameRenderer>, std::string> makeGlFrameRenderer(
+    const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
+    const render::LightingGeometry& geometry) {
+  auto context = options.headless
+                     ? gl::GlContext::headless(options.widthPx, options.heightPx)
+                     : gl::GlContext::window(options.widthPx, options.heightPx, "vemview");
+  if (!context) {
+    return std::unexpected(context.error());
+  }
+  gl::GlRendererOptions glOptions;
+  glOptions.widthPx = options.widthPx;
+  glOptions.heightPx = options.heightPx;
+  glOptions.shadowMapPx = plan.shadowMapPx;
+  glOptions.maxShadowMaps = std::max<std::size_t>(plan.lighting.shadowedCount, 1);
+  glOptions.presentToWindow = !options.headless;
+  glOptions.geometry = &geometry;
+  auto renderer = gl::GlRenderer::create(scene, glOptions);
+  if (!renderer) {
+    return std::unexpected(renderer.error());
+  }
+  return std::make_unique<GlFrameRenderer>(options, std::move(*context), std::move(*renderer));
+}
+
+}  // namespace vem::view

@@ -1,0 +1,65 @@
+#include "client/vemview/render_plan.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace vem::view {
+
+RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
+  RenderPlan plan;
+  plan.glossyPass = scene::anyGlossy(scene);
+  plan.glossyReason = plan.glossyPass ? "a material is glossy" : "no glossy material";
+  const bool mirror = scene::anyMirrorLike(scene);
+  plan.cubeMap = plan.glossyPass || request.backgroundWanted;
+  plan.cubeMapReason = plan.glossyPass ? (mirror ? "mirror-like reflections" : "glossy reflections")
+                       : request.backgroundWanted ? "background asked for"
+                                                  : "no glossy material";
+  const bool canShadow = scene::canCastShadows(scene);
+  plan.shadowMaps = canShadow && request.shadowedCount > 0;
+  plan.shadowReason = !canShadow                   ? "nothing can shadow anything"
+                      : request.shadowedCount == 0 ? "shadows turned off"
+                                                   : "the scene can shadow itself";
+  plan.lighting.lightCount = std::max<std::size_t>(request.lightCount, 1);
+  plan.lighting.shadowedCount =
+      plan.shadowMaps
+          ? std::min<std::size_t>({request.shadowedCount, render::kMaxShadowMaps, plan.lighting.lightCount})
+          : 0;
+  plan.lighting.regions = request.regions;
+  plan.lighting.glossyPass = plan.glossyPass;
+  plan.lighting.clusterBudget = request.inputClustered ? 0 : request.clusterBudget;
+  plan.lighting.clusterLayout = request.inputLayout;
+  plan.shadowMapPx = request.shadowMapPx;
+  plan.targetFrameMs = request.targetFrameMs;
+  return plan;
+}
+
+std::string RenderPlan::describe() const {
+  std::string text = fmt::format("lights {}", lighting.lightCount);
+  if (targetFrameMs) {
+    text += fmt::format(" (adaptive, target {:.1f} ms)", *targetFrameMs);
+  }
+  text += shadowMaps ? fmt::format(", shadow maps {} at {} px", lighting.shadowedCount, shadowMapPx)
+                     : fmt::format(", no shadow maps ({})", shadowReason);
+  text += lighting.regions ? ", regions on" : ", regions off";
+  text += glossyPass
+              ? fmt::format(", glossy L/H pass (|H| {}; {})", lighting.highCount, glossyReason)
+              : fmt::format(", no glossy pass ({})", glossyReason);
+  text += cubeMap ? fmt::format(", cube map ({})", cubeMapReason)
+                  : fmt::format(", no cube map ({})", cubeMapReason);
+  if (lighting.clusterBudget > 0) {
+    text += fmt::format(", clustering Q {}", lighting.clusterBudget);
+  }
+  return text;
+}
+
+FrameDecision decideFrame(const std::optional<FrameState>& last, const FrameState& now) {
+  if (!last) {
+    return FrameDecision{true, true};
+  }
+  const bool lightsChanged = last->inputSeq != now.inputSeq || last->lightCount != now.lightCount;
+  const bool cameraChanged = last->cameraVersion != now.cameraVersion;
+  return FrameDecision{lightsChanged || cameraChanged, lightsChanged};
+}
+
+}  // namespace vem::view

@@ -1,0 +1,70 @@
+// RenderPlan: what vemview computes for a scene and an input, decided once at start and printed
+// (the user's rule "simulate only the effects a scene calls for"), and the per-frame decisions that
+// skip work that did not change.
+//
+// Once per run (planFor):
+// - glossyPass: the L/H light sets and their regions (paper 004 section 4.2) only when some
+//   material is glossy; otherwise every surface is shaded from the diffuse lights alone.
+// - cubeMap: the environment cube map (subscribed from the stream, or made from the map file) only
+//   when some material is glossy (reflections) or the user asked for it as the background.
+// - shadowMaps: shadowedCount > 0 only when some surface can hide a light from another
+//   (scene::canCastShadows); the atlas is not even allocated otherwise.
+// Per frame (decideFrame):
+// - lights unchanged since the last drawn frame (same input seq): shadow maps are reused;
+// - lights, camera and scene all unchanged: nothing is redrawn (the last image stands).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "client/render/shading_lights.h"
+#include "client/scene/scene.h"
+
+namespace vem::view {
+
+struct PlanRequest {
+  std::size_t lightCount = 256;    // N asked for
+  std::size_t shadowedCount = 64;  // S asked for
+  int shadowMapPx = 256;
+  bool regions = true;
+  int clusterBudget = 0;                // Q, 0: off
+  bool backgroundWanted = false;        // --background
+  std::optional<double> targetFrameMs;  // adaptive light count
+  bool inputClustered = false;          // the input's lights are clusters already
+  MapLayout inputLayout = MapLayout::Hemisphere;
+};
+
+struct RenderPlan {
+  bool glossyPass = false;
+  bool cubeMap = false;
+  bool shadowMaps = false;
+  render::LightingOptions lighting;  // N, S (0 without shadow maps), regions, glossy, Q
+  int shadowMapPx = 256;
+  std::optional<double> targetFrameMs;
+  std::string glossyReason;  // why, in a few words
+  std::string cubeMapReason;
+  std::string shadowReason;
+
+  [[nodiscard]] std::string describe() const;  // one line for the start and the status line
+};
+
+[[nodiscard]] RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request);
+
+struct FrameState {
+  std::uint64_t inputSeq = 0;
+  std::uint64_t cameraVersion = 0;
+  std::size_t lightCount = 0;
+};
+
+struct FrameDecision {
+  bool redraw = true;
+  bool lightsChanged = true;  // the shading lights must be rebuilt (and shadow maps redrawn)
+};
+
+// `last` is the state of the last drawn frame (empty before the first).
+[[nodiscard]] FrameDecision decideFrame(const std::optional<FrameState>& last,
+                                        const FrameState& now);
+
+}  // namespace vem::view

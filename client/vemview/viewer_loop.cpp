@@ -1,0 +1,207 @@
+#include "client/vemview/viewer_loop.h"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "client/render/shading_lights.h"
+#include "client/render/tone_mapping.h"
+#include "client/scene/orbit_camera.h"
+#include "client/vemview/adaptive_light_count.h"
+#include "client/vemview/frame_renderer.h"
+#include "client/vemview/frame_writer.h"
+#include "client/vemview/light_input.h"
+#include "client/vemview/render_plan.h"
+#include "client/vemview/scene_argument.h"
+#include "client/vemview/status_line.h"
+
+namespace vem::view {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::expected<std::unique_ptr<LightInput>, std::string> openInput(const ViewerOptions& o,
+                                                                  bool cubeMap) {
+  if (!o.connectUrl.empty()) {
+    return openStreamInput(StreamInputOptions{o.connectUrl, o.token, cubeMap, 2.0, 128});
+  }
+  if (!o.lightFile.empty()) {
+    return openLightFileInput(o.lightFile);
+  }
+  const std::string map = o.mapFile.empty() ? defaultMapPath() : o.mapFile;
+  return openMapInput(map,
+                      MapInputOptions{std::max<std::size_t>(o.lightCount, 1024), cubeMap, 128});
+}
+
+PlanRequest requestFor(const ViewerOptions& o, const InputFacts& facts) {
+  PlanRequest request;
+  request.lightCount = o.lightCount;
+  request.shadowedCount = o.shadowedCount;
+  request.shadowMapPx = o.shadowMapPx;
+  request.regions = o.regions;
+  request.clusterBudget = o.clusterBudget;
+  request.backgroundWanted = o.background;
+  request.targetFrameMs = o.targetFrameMs;
+  request.inputClustered = facts.clustered;
+  request.inputLayout = facts.layout;
+  return request;
+}
+
+scene::OrbitCamera cameraFor(const scene::Scene& scene, const ViewerOptions& o) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  return scene::viewingCamera(scene, float(o.azimuthDeg * kDeg), float(o.elevationDeg * kDeg));
+}
+
+// Everything one run holds; the loop below moves frames through it.
+struct Viewer {
+  Viewer(const ViewerOptions& o, RenderPlan p, std::unique_ptr<LightInput> in,
+         scene::OrbitCamera startCamera)
+      : options(o),
+        plan(std::move(p)),
+        input(std::move(in)),
+        geometry(render::makeLightingGeometry()),
+        camera(startCamera) {}
+
+  const ViewerOptions& options;
+  RenderPlan plan;
+  std::unique_ptr<LightInput> input;
+  std::unique_ptr<FrameRenderer> renderer;
+  render::LightingGeometry geometry;
+  scene::OrbitCamera camera;
+  std::uint64_t cameraVersion = 1;
+  std::optional<FrameWriter> writer;
+  std::optional<AdaptiveLightCount> adaptive;
+  render::ToneSmoother tone{0.5};
+  std::optional<FrameState> lastDrawn;
+  render::ShadingLights shading;
+  RenderedFrame last;
+  StatusLine status;
+};
+
+// One frame: returns false when the run must stop (window closed), an error for a failure.
+std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
+  const auto frameStart = Clock::now();
+  const auto wait =
+      std::chrono::milliseconds(v.lastDrawn ? 5 : int(v.options.streamTimeoutSec * 1000));
+  std::optional<InputFrame> frame = v.input->next(wait);
+  if (!frame) {
+    const std::string why = v.input->failure();
+    return std::unexpected(why.empty() ? fmt::format("{}: no lights arrived within {} s",
+                                                     v.input->facts().description,
+                                                     v.options.streamTimeoutSec)
+                                       : why);
+  }
+  const float drag = v.renderer->takeOrbitDragRad();
+  const bool orbiting = v.options.orbitDegPerFrame != 0.0 && frameIndex > 0;
+  if (drag != 0.0F || orbiting) {
+    const double stepRad = orbiting ? v.options.orbitDegPerFrame * std::numbers::pi / 180.0 : 0.0;
+    v.camera = scene::orbited(v.camera, drag + float(stepRad));
+    ++v.cameraVersion;
+  }
+  const std::size_t count = v.adaptive ? v.adaptive->count() : v.plan.lighting.lightCount;
+  const FrameState state{frame->seq, v.cameraVersion, count};
+  const FrameDecision decision = decideFrame(v.lastDrawn, state);
+  FrameRecord record{frameIndex, frame->seq, decision.redraw, {}};
+  double shadingMs = 0.0;
+  if (decision.lightsChanged) {
+    const auto start = Clock::now();
+    render::LightingOptions lighting = v.plan.lighting;
+    lighting.lightCount = count;
+    v.shading = render::buildShadingLights(*frame->lights, v.geometry, lighting);
+    shadingMs = msSince(start);
+  }
+  if (decision.redraw) {
+    v.last = v.renderer->render(v.camera, v.shading, *frame);
+    const double dtSec =
+        1.0 / 30.0;  // tone smoothing in frame time (headless runs are not real time)
+    v.tone.update(render::measureLuminance(v.last.image),
+                  v.options.headless ? dtSec : msSince(frameStart) / 1000.0);
+    v.lastDrawn = state;
+    if (v.adaptive) {
+      v.adaptive->update(v.last.renderMs);
+    }
+  }
+  const render::ToneParams tone = v.tone.current().value_or(render::ToneParams{});
+  record.timing = v.last.timing;
+  record.timing["lights"] = v.shading.diffuse.lights.size();
+  record.timing["shadowed"] = v.shading.shadowCasters.size();
+  record.timing["shading_lights_ms"] = shadingMs;
+  record.timing["render_ms"] = decision.redraw ? v.last.renderMs : 0.0;
+  v.status.add(decision.redraw, v.last.renderMs, v.shading);
+  v.renderer->present(tone, v.status.overlay(v.plan));
+  if (v.writer) {
+    if (auto written = v.writer->write(record, v.last.image, tone); !written) {
+      return std::unexpected(written.error());
+    }
+  }
+  v.status.maybePrint(v.plan);
+  return v.renderer->open();
+}
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options) {
+  auto scene = loadSceneArgument(options.scene);
+  if (!scene) {
+    spdlog::error("{}", scene.error());
+    return EXIT_FAILURE;
+  }
+  if (options.renderer == RendererKind::Reference &&
+      (!options.connectUrl.empty() || !options.lightFile.empty())) {
+    spdlog::error(
+        "--renderer reference integrates an environment map: give it --map FILE, not "
+        "--connect or --lights");
+    return EXIT_FAILURE;
+  }
+  const RenderPlan wanted = planFor(*scene, requestFor(options, InputFacts{}));
+  auto input = openInput(options, wanted.cubeMap);
+  if (!input) {
+    spdlog::error("{}", input.error());
+    return EXIT_FAILURE;
+  }
+  RenderPlan plan = planFor(*scene, requestFor(options, (*input)->facts()));
+  Viewer v(options, std::move(plan), std::move(*input), cameraFor(*scene, options));
+  fmt::print(stderr, "vemview: scene {} ({} meshes, {} triangles), input {}\n", scene->name,
+             scene->meshes.size(), scene::triangleCount(*scene), v.input->facts().description);
+  fmt::print(stderr, "vemview: plan: {}\n", v.plan.describe());
+  auto renderer = makeFrameRenderer(options, v.plan, *scene, v.geometry);
+  if (!renderer) {
+    spdlog::error("{}", renderer.error());
+    return EXIT_FAILURE;
+  }
+  v.renderer = std::move(*renderer);
+  fmt::print(stderr, "vemview: renderer {}\n", v.renderer->name());
+  if (!options.outDir.empty()) {
+    auto writer = FrameWriter::open(options.outDir, options.png, options.exr);
+    if (!writer) {
+      spdlog::error("{}", writer.error());
+      return EXIT_FAILURE;
+    }
+    v.writer.emplace(std::move(*writer));
+  }
+  if (v.plan.targetFrameMs) {
+    v.adaptive.emplace(*v.plan.targetFrameMs, v.plan.lighting.lightCount, 4, 4096);
+  }
+  for (std::uint64_t i = 0; options.frames == 0 || i < options.frames; ++i) {
+    auto going = step(v, i);
+    if (!going) {
+      spdlog::error("{}", going.error());
+      return EXIT_FAILURE;
+    }
+    if (!*going) {
+      break;
+    }
+  }
+  v.status.printSummary(v.plan, v.writer ? v.writer->lastPng().string() : std::string());
+  return EXIT_SUCCESS;
+}
+
+}  // namespace vem::view

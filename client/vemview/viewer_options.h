@@ -1,0 +1,52 @@
+// ViewerOptions: vemview's command line (CLI11), checked. `vemview --help` lists every option with
+// its default; docs/vemview.md explains them.
+#pragma once
+
+#include <cstddef>
+#include <expected>
+#include <optional>
+#include <string>
+
+namespace vem::view {
+
+enum class RendererKind { Gl, Embree, Reference };
+
+struct ViewerOptions {
+  // Input: exactly one of these (none: the map of kDefaultMap from the shared data).
+  std::string connectUrl;
+  std::string token;
+  std::string lightFile;
+  std::string mapFile;
+  std::string scene = "default";  // a file (.obj, .gltf, .glb) or a built-in scene name
+  // Output.
+  bool headless = false;
+  std::size_t frames = 0;  // 0: until the window closes (window) / 1 (headless)
+  std::string outDir;
+  bool png = true;
+  bool exr = true;
+  RendererKind renderer = RendererKind::Gl;
+  int widthPx = 640;
+  int heightPx = 480;
+  // Lighting.
+  std::size_t lightCount = 256;
+  std::size_t shadowedCount = 64;
+  int shadowMapPx = 256;
+  bool regions = true;
+  int clusterBudget = 0;
+  std::optional<double> targetFrameMs;
+  bool background = false;
+  std::string screenshot;  // window only: the last frame as shown
+  // Camera.
+  double orbitDegPerFrame = 0.0;
+  double azimuthDeg = 35.0;
+  double elevationDeg = 20.0;
+  // Reference renderer.
+  double referenceError = 0.01;
+  std::size_t referenceMaxSamples = 4096;
+  double streamTimeoutSec = 10.0;
+};
+
+// The options, or the exit code CLI11 chose (0 for --help) with its message already printed.
+[[nodiscard]] std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv);
+
+}  // namespace vem::view

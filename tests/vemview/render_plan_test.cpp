@@ -1,0 +1,97 @@
+#include "client/vemview/render_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "client/scene/primitives.h"
+
+namespace vem::view {
+namespace {
+
+scene::Scene sphereOnPlane(scene::Material sphereMaterial) {
+  scene::Scene s;
+  s.materials = {scene::Material{}, sphereMaterial};
+  s.meshes = {scene::groundPlane(0.0F, 4.0F), scene::sphereMesh({0, 1, 0}, 0.5F, 16, 32, 1)};
+  return s;
+}
+
+scene::Material glossyMaterial() {
+  scene::Material m;
+  m.lobe = scene::Lobe::Ggx;
+  m.specularAlbedo = glm::vec3(0.9F);
+  m.roughness = 0.3F;
+  return m;
+}
+
+TEST(RenderPlan, LambertianSceneHasNoGlossyPassAndNoCubeMap) {
+  const RenderPlan plan = planFor(sphereOnPlane(scene::Material{}), PlanRequest{});
+  EXPECT_FALSE(plan.glossyPass);
+  EXPECT_FALSE(plan.lighting.glossyPass);
+  EXPECT_FALSE(plan.cubeMap);
+  EXPECT_NE(plan.describe().find("no glossy pass"), std::string::npos);
+  EXPECT_NE(plan.describe().find("no cube map"), std::string::npos);
+}
+
+TEST(RenderPlan, GlossyMaterialTurnsOnTheLHPassAndTheCubeMap) {
+  const RenderPlan plan = planFor(sphereOnPlane(glossyMaterial()), PlanRequest{});
+  EXPECT_TRUE(plan.glossyPass);
+  EXPECT_TRUE(plan.lighting.glossyPass);
+  EXPECT_TRUE(plan.cubeMap);
+}
+
+TEST(RenderPlan, BackgroundAloneAsksForTheCubeMapButNoGlossyPass) {
+  PlanRequest request;
+  request.backgroundWanted = true;
+  const RenderPlan plan = planFor(sphereOnPlane(scene::Material{}), request);
+  EXPECT_TRUE(plan.cubeMap);
+  EXPECT_FALSE(plan.glossyPass);
+}
+
+TEST(RenderPlan, LoneConvexObjectGetsNoShadowMaps) {
+  scene::Scene s;
+  s.materials = {scene::Material{}};
+  s.meshes = {scene::sphereMesh({0, 0, 0}, 1.0F)};
+  const RenderPlan plan = planFor(s, PlanRequest{});
+  EXPECT_FALSE(plan.shadowMaps);
+  EXPECT_EQ(plan.lighting.shadowedCount, 0U);
+  EXPECT_NE(plan.describe().find("nothing can shadow anything"), std::string::npos);
+}
+
+TEST(RenderPlan, SphereAbovePlaneGetsTheShadowMapsAskedFor) {
+  PlanRequest request;
+  request.lightCount = 32;
+  request.shadowedCount = 64;  // more than the lights: capped
+  const RenderPlan plan = planFor(sphereOnPlane(scene::Material{}), request);
+  EXPECT_TRUE(plan.shadowMaps);
+  EXPECT_EQ(plan.lighting.shadowedCount, 32U);
+}
+
+TEST(RenderPlan, AlreadyClusteredInputIsNotClusteredAgain) {
+  PlanRequest request;
+  request.clusterBudget = 16;
+  request.inputClustered = true;
+  EXPECT_EQ(planFor(sphereOnPlane(scene::Material{}), request).lighting.clusterBudget, 0);
+  request.inputClustered = false;
+  EXPECT_EQ(planFor(sphereOnPlane(scene::Material{}), request).lighting.clusterBudget, 16);
+}
+
+TEST(FrameDecision, UnchangedLightsAndCameraAreNotRedrawn) {
+  const FrameState a{7, 1, 256};
+  EXPECT_TRUE(decideFrame(std::nullopt, a).redraw);
+  const FrameDecision same = decideFrame(a, a);
+  EXPECT_FALSE(same.redraw);
+  EXPECT_FALSE(same.lightsChanged);
+}
+
+TEST(FrameDecision, MovedCameraRedrawsButKeepsTheShadowMaps) {
+  const FrameDecision d = decideFrame(FrameState{7, 1, 256}, FrameState{7, 2, 256});
+  EXPECT_TRUE(d.redraw);
+  EXPECT_FALSE(d.lightsChanged);
+}
+
+TEST(FrameDecision, NewLightsOrANewCountRebuildTheLights) {
+  EXPECT_TRUE(decideFrame(FrameState{7, 1, 256}, FrameState{8, 1, 256}).lightsChanged);
+  EXPECT_TRUE(decideFrame(FrameState{7, 1, 256}, FrameState{7, 1, 128}).lightsChanged);
+}
+
+}  // namespace
+}  // namespace vem::view

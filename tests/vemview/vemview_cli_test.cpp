@@ -1,0 +1,193 @@
+// vemview as a user meets it (the built executable, headless through EGL): the plan it prints for
+// each kind of scene, the frames, EXRs and timing log it writes, the work it skips when nothing
+// changed, and one error line for each kind of bad input.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "client/render/image_files.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ViewRun {
+  int exitCode = -1;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<nlohmann::json> jsonLines(const fs::path& path) {
+  std::vector<nlohmann::json> lines;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    lines.push_back(nlohmann::json::parse(line));
+  }
+  return lines;
+}
+
+class VemviewCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("vemview_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  ViewRun run(const std::string& args) const {
+    const fs::path err = dir_ / "stderr";
+    const std::string command = std::string(VEMVIEW_PATH) + " " + args + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    return {WEXITSTATUS(status), readFile(err)};
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  void write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+  }
+  // Exit non-zero with one line that names `part`.
+  void expectRefused(const std::string& args, const std::string& part) const {
+    const ViewRun r = run(args);
+    EXPECT_NE(r.exitCode, 0) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.err.starts_with("vemview: error: ")) << r.err;
+    EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+  }
+
+  fs::path dir_;
+};
+
+const std::string kSmall = " --headless --width 64 --height 48 --count 16 --shadowed 8 ";
+
+TEST_F(VemviewCli, HeadlessRunWritesPngExrAndOneTimingLinePerFrame) {
+  const ViewRun r = run(kSmall + "--scene spheres --frames 2 --orbit 10 --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name :
+       {"frame-000000.png", "frame-000000.exr", "frame-000001.png", "frame-000001.exr"}) {
+    EXPECT_TRUE(fs::exists(dir_ / "out" / name)) << name;
+  }
+  const auto png = vem::render::loadSrgb8(dir_ / "out" / "frame-000000.png");
+  ASSERT_TRUE(png.has_value()) << png.error();
+  EXPECT_EQ(png->widthPx, 64);
+  EXPECT_EQ(png->heightPx, 48);
+  const auto exr = vem::render::loadLinearExr(dir_ / "out" / "frame-000000.exr");
+  ASSERT_TRUE(exr.has_value()) << exr.error();
+  EXPECT_GT(*std::ranges::max_element(exr->rgb), 0.0F);
+  EXPECT_EQ(jsonLines(dir_ / "out" / "timing.jsonl").size(), 2U);
+}
+
+TEST_F(VemviewCli, StaticLightsAndCameraAreDrawnOnceAndNotRedrawn) {
+  const ViewRun r = run(kSmall + "--scene spheres --frames 3 --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
+  ASSERT_EQ(lines.size(), 3U);
+  EXPECT_TRUE(lines[0]["drawn"].get<bool>());
+  EXPECT_FALSE(lines[1]["drawn"].get<bool>());
+  EXPECT_FALSE(lines[2]["drawn"].get<bool>());
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "frame-000001.png"));
+  EXPECT_NE(r.err.find("2 not redrawn"), std::string::npos) << r.err;
+}
+
+TEST_F(VemviewCli, OrbitingCameraRedrawsButReusesTheShadowMaps) {
+  const ViewRun r = run(kSmall + "--scene spheres --frames 3 --orbit 15 --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
+  ASSERT_EQ(lines.size(), 3U);
+  EXPECT_EQ(lines[0]["shadow_maps_rendered"].get<int>(), 8);
+  for (int i = 1; i < 3; ++i) {
+    EXPECT_TRUE(lines[i]["drawn"].get<bool>());
+    EXPECT_EQ(lines[i]["shadow_maps_rendered"].get<int>(), 0);
+    EXPECT_EQ(lines[i]["shadow_maps_reused"].get<int>(), 8);
+  }
+}
+
+TEST_F(VemviewCli, LambertianSceneSkipsTheGlossyPassAndTheCubeMap) {
+  const ViewRun r = run(kSmall + "--scene diffuse --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("no glossy pass (no glossy material)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no cube map"), std::string::npos) << r.err;
+}
+
+TEST_F(VemviewCli, GlossySceneGetsTheLHPassAndTheCubeMap) {
+  const ViewRun r = run(kSmall + "--scene default --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("glossy L/H pass"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cube map ("), std::string::npos) << r.err;
+}
+
+TEST_F(VemviewCli, LoneConvexObjectRendersWithoutShadowMaps) {
+  const ViewRun r = run(kSmall + "--scene sphere --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("no shadow maps (nothing can shadow anything)"), std::string::npos) << r.err;
+  const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
+  ASSERT_EQ(lines.size(), 1U);
+  EXPECT_EQ(lines[0]["shadow_maps_rendered"].get<int>(), 0);
+}
+
+TEST_F(VemviewCli, LightFileFromVemtoolIsRendered) {
+  write(
+      "lights.jsonl",
+      R"({"frame":0,"count":2,"lights":[{"id":0,"dir":[0,1,0],"rgb":[3,3,3]},{"id":1,"dir":[0.6,0.8,0],"rgb":[1,1,1]}]})"
+      "\n");
+  const ViewRun r =
+      run(kSmall + "--scene spheres --lights " + path("lights.jsonl") + " --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("light file"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "frame-000000.png"));
+}
+
+TEST_F(VemviewCli, MissingSceneFileIsOneSentenceNamingIt) {
+  expectRefused(kSmall + "--scene " + path("nothere.obj"), "nothere.obj");
+}
+
+TEST_F(VemviewCli, TruncatedObjIsRefusedNamingTheFile) {
+  write("cut.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2");
+  expectRefused(kSmall + "--scene " + path("cut.obj"), "cut.obj");
+}
+
+TEST_F(VemviewCli, FaceIndexOutOfRangeIsRefusedNamingTheFile) {
+  write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+  expectRefused(kSmall + "--scene " + path("range.obj"), "range.obj");
+}
+
+TEST_F(VemviewCli, NanVertexIsRefusedNamingTheFile) {
+  write("nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n");
+  expectRefused(kSmall + "--scene " + path("nan.obj"), "nan.obj");
+}
+
+TEST_F(VemviewCli, UnknownSceneFormatIsRefused) {
+  write("scene.ply", "ply\n");
+  expectRefused(kSmall + "--scene " + path("scene.ply"), "scene.ply");
+}
+
+TEST_F(VemviewCli, ReferenceRendererWithoutAMapIsRefused) {
+  write("lights.jsonl", R"({"lights":[{"id":0,"dir":[0,1,0],"rgb":[1,1,1]}]})"
+                        "\n");
+  expectRefused(kSmall + "--renderer reference --lights " + path("lights.jsonl"), "--map");
+}
+
+TEST_F(VemviewCli, BadLightFileIsOneSentenceWithTheLine) {
+  write("bad.jsonl", "{\"lights\": 3}\n");
+  expectRefused(kSmall + "--lights " + path("bad.jsonl"), "bad.jsonl: line 1");
+}
+
+TEST_F(VemviewCli, OutPathThatIsAFileIsRefused) {
+  write("file", "x");
+  expectRefused(kSmall + "--scene spheres --out " + path("file"), "--out");
+}
+
+}  // namespace
