@@ -1,0 +1,85 @@
+// GlRenderer: vemview's OpenGL renderer (paper 004 section 5.2): per-pixel lighting of a scene
+// from many directional lights into a float framebuffer, in two stages, shadow maps into one
+// atlas (shadow_atlas.h, section 5.2.1), then one geometry pass with angular-region light lists
+// (section 4.1), the glossy L/H sets (section 4.2) and the cube map for mirror-like materials and
+// the background; a separate tone-mapping pass for display (tone_map_pass.h, section 5.1).
+//
+// Conventions: the scene's world frame (scene/scene.h); images widthPx x heightPx, row 0 at the
+// top and pixel-aligned with the Embree renderer through scene::OrbitCamera; radiance in the
+// lights' units (core/light.h). Needs a current GlContext for its whole life.
+//
+// What a frame computes follows its ShadingLights: no shadowCasters, no shadow pass; the same
+// lightsKey (and caster count) as the previous frame, the maps are reused; empty diffuseLists, every
+// diffuse light is walked; no glossy sets, glossy materials take their specular lobe from the
+// diffuse lights; mirror-like materials reflect the cube map (black without one).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <expected>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "client/render/linear_image.h"
+#include "client/render/shading_lights.h"
+#include "client/render/tone_mapping.h"
+#include "client/scene/orbit_camera.h"
+#include "client/scene/scene.h"
+#include "core/cube_map.h"
+
+namespace vem::gl {
+
+struct GlRendererOptions {
+  int widthPx = 320;
+  int heightPx = 240;
+  int shadowMapPx = 256;                              // one tile's side
+  std::size_t maxShadowMaps = render::kMaxShadowMaps;  // atlas slots (grid = ceil(sqrt))
+  bool presentToWindow = false;  // presentToneMapped also blits into framebuffer 0
+  // The region tables the ShadingLights were built on (borrowed during create() only);
+  // nullptr: render::makeLightingGeometry(), the defaults buildShadingLights callers use.
+  const render::LightingGeometry* geometry = nullptr;
+};
+
+struct GlFrameStats {
+  double shadowPassMs = 0.0;    // shadow maps, to glFinish
+  double lightingPassMs = 0.0;  // light upload, background and geometry pass, to glFinish
+  double totalMs = 0.0;
+  std::size_t shadowMapsRendered = 0;
+  std::size_t shadowMapsReused = 0;
+  bool backgroundUploaded = false;
+};
+
+class GlRenderer {
+ public:
+  [[nodiscard]] static std::expected<std::unique_ptr<GlRenderer>, std::string> create(
+      const scene::Scene& scene, const GlRendererOptions& options);
+  ~GlRenderer();
+  GlRenderer(const GlRenderer&) = delete;
+  GlRenderer& operator=(const GlRenderer&) = delete;
+
+  // One frame into the float buffer. background: the cube map to show and reflect (nullptr:
+  // black), re-uploaded only when (background, backgroundVersion) differs from the last frame's.
+  GlFrameStats render(const scene::OrbitCamera& camera, const render::ShadingLights& lights,
+                      const CubeMap* background, std::uint64_t backgroundVersion = 0);
+  // The last frame: linear radiance, covered = 1 where geometry was drawn.
+  [[nodiscard]] render::LinearImage readLinear() const;
+  // Tone-maps the last frame (render::toneMap + sRGB) into the display image (and the window).
+  void presentToneMapped(const render::ToneParams& params);
+  // The display image as RGB bytes, row 0 at the top (from the window's back buffer when
+  // presentToWindow, so read it before swapBuffers).
+  [[nodiscard]] std::vector<std::uint8_t> readDisplaySrgb8() const;
+
+  [[nodiscard]] int widthPx() const;
+  [[nodiscard]] int heightPx() const;
+  [[nodiscard]] std::size_t shadowMapCapacity() const;  // atlas slots actually available
+  [[nodiscard]] int shadowAtlasPx() const;
+
+ private:
+  struct Impl;
+  explicit GlRenderer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace vem::gl

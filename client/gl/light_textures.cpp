@@ -1,0 +1,128 @@
+#include "client/gl/light_textures.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "core/cube_map_lookup.h"
+
+namespace vem::gl {
+namespace {
+
+void check(bool ok, const char* what) {
+  if (ok) return;
+  std::fprintf(stderr, "vem_gl LightTextures: broken contract: %s\n", what);
+  std::abort();
+}
+
+GlTexture regionCube(const AngularRegions& regions) {
+  GlTexture texture = GlTexture::create();
+  glBindTexture(GL_TEXTURE_CUBE_MAP, texture.id());
+  const int f = regions.faceSize;
+  check(regions.regionOfTexel.size() == cubeTexelCount(f), "region table size is 6 F^2");
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  for (int face = 0; face < kCubeFaceCount; ++face) {
+    const std::uint32_t* texels = regions.regionOfTexel.data() + std::size_t(face * f * f);
+    glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_R32UI, f, f, 0,
+                 GL_RED_INTEGER, GL_UNSIGNED_INT, texels);
+  }
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+// Two texels a light: (dir, slot), (rgb, 0); slot -1 when `slots` is empty.
+std::vector<float> packLights(const LightSet& set, const std::vector<std::int32_t>& slots) {
+  std::vector<float> out;
+  out.reserve(set.lights.size() * 8);
+  for (std::size_t i = 0; i < set.lights.size(); ++i) {
+    const Light& light = set.lights[i];
+    const float slot = i < slots.size() ? float(slots[i]) : -1.0F;
+    out.insert(out.end(), {light.dir.x, light.dir.y, light.dir.z, slot, light.rgb.x, light.rgb.y,
+                           light.rgb.z, 0.0F});
+  }
+  return out;
+}
+
+void uploadLists(TextureBuffer& list, TextureBuffer& offsets, const RegionLightLists& lists) {
+  list.upload(std::span<const std::uint32_t>(lists.lightIndices));
+  offsets.upload(std::span<const std::uint32_t>(lists.offsets));
+}
+
+}  // namespace
+
+LightTextures::LightTextures(const render::LightingGeometry& geometry) {
+  for (LightSetTextures* set : {&diffuse_, &low_, &high_}) {
+    set->lights.upload(std::span<const float>());
+    set->list.upload(std::span<const std::uint32_t>());
+    set->offsets.upload(std::span<const std::uint32_t>());
+  }
+  diffuse_.regions = regionCube(geometry.diffuseRegions);
+  diffuse_.regionCount = geometry.diffuseRegions.count();
+  low_.regions = regionCube(geometry.glossyRegions.low);
+  low_.regionCount = geometry.glossyRegions.low.count();
+  high_.regions = regionCube(geometry.glossyRegions.high);
+  high_.regionCount = geometry.glossyRegions.high.count();
+  cosCone_ = float(std::cos(geometry.glossyRegions.coneHalfAngleRad));
+}
+
+void LightTextures::upload(const render::ShadingLights& lights) {
+  const std::size_t n = lights.diffuse.lights.size();
+  check(lights.shadowSlotOfDiffuse.empty() || lights.shadowSlotOfDiffuse.size() == n,
+        "shadowSlotOfDiffuse has one slot per diffuse light");
+  diffuse_.lights.upload(std::span<const float>(packLights(lights.diffuse,
+                                                           lights.shadowSlotOfDiffuse)));
+  diffuseCount_ = int(n);
+  diffuseRegions_ = !lights.diffuseLists.offsets.empty();
+  if (diffuseRegions_) {
+    check(lights.diffuseLists.offsets.size() == diffuse_.regionCount + 1,
+          "diffuseLists were built on this renderer's diffuse regions");
+    uploadLists(diffuse_.list, diffuse_.offsets, lights.diffuseLists);
+  }
+  glossy_ = lights.glossy.has_value();
+  if (!glossy_) return;
+  const GlossyLightSets& sets = *lights.glossy;
+  check(sets.lowLists.offsets.size() == low_.regionCount + 1 &&
+            sets.highLists.offsets.size() == high_.regionCount + 1,
+        "glossy lists were built on this renderer's glossy regions");
+  check(sets.high.lights.size() <= sets.low.lights.size(), "H is a prefix of L");
+  check(lights.shadowSlotOfLow.empty() || lights.shadowSlotOfLow.size() == sets.low.lights.size(),
+        "shadowSlotOfLow has one slot per L light");
+  low_.lights.upload(std::span<const float>(packLights(sets.low, lights.shadowSlotOfLow)));
+  high_.lights.upload(std::span<const float>(packLights(sets.high, lights.shadowSlotOfLow)));
+  uploadLists(low_.list, low_.offsets, sets.lowLists);
+  uploadLists(high_.list, high_.offsets, sets.highLists);
+  maxConeLights_ = int(std::max<std::size_t>(1, std::min<std::size_t>(lights.maxConeLights,
+                                                                       1U << 30U)));
+}
+
+void LightTextures::bindSet(const GlProgram& program, const LightSetTextures& set,
+                            GLenum firstUnit, const char* prefix) const {
+  const std::string p = std::string("u") + prefix;
+  set.lights.bind(firstUnit);
+  program.set((p + "Lights").c_str(), int(firstUnit));
+  set.list.bind(firstUnit + 1);
+  program.set((p + "List").c_str(), int(firstUnit + 1));
+  set.offsets.bind(firstUnit + 2);
+  program.set((p + "Offsets").c_str(), int(firstUnit + 2));
+  glActiveTexture(GL_TEXTURE0 + firstUnit + 3);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, set.regions.id());
+  program.set((p + "Regions").c_str(), int(firstUnit + 3));
+}
+
+void LightTextures::bind(const GlProgram& program) const {
+  bindSet(program, diffuse_, kFirstLightUnit, "Diffuse");
+  bindSet(program, low_, kFirstLightUnit + 4, "Low");
+  bindSet(program, high_, kFirstLightUnit + 8, "High");
+  program.set("uDiffuseCount", diffuseCount_);
+  program.set("uDiffuseUseRegions", diffuseRegions_ ? 1 : 0);
+  program.set("uCosCone", cosCone_);
+  program.set("uMaxConeLights", maxConeLights_);
+}
+
+}  // namespace vem::gl

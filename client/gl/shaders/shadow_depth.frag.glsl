@@ -1,0 +1,3 @@
+// Depth only.
+out vec4 fragColor;
+void main() { fragColor = vec4(1.0); }
