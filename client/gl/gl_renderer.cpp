@@ -10,6 +10,7 @@
 #include "client/gl/light_clip.h"
 #include "client/gl/light_textures.h"
 #include "client/gl/shadow_atlas.h"
+#include "client/gl/texture_buffer.h"
 #include "client/gl/tone_map_pass.h"
 
 namespace vem::gl {
@@ -17,6 +18,7 @@ namespace {
 
 constexpr GLenum kShadowUnit = kFirstLightUnit + kLightUnitCount;  // 12
 constexpr GLenum kEnvironmentUnit = kShadowUnit + 1;                // 13
+constexpr GLenum kCasterUnit = kEnvironmentUnit + 1;                // 14
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -70,6 +72,9 @@ struct GlRenderer::Impl {
   LightingTarget target;
   GlVertexArray emptyVertexArray = GlVertexArray::create();
   std::optional<std::uint64_t> shadowKey;  // lightsKey of the maps in the atlas
+  // Each slot's caster direction (RGBA32F, xyz): a light shadowed through another light's map
+  // looks it up in that caster's view, not its own.
+  TextureBuffer casterDirs;
   std::size_t shadowCount = 0;
 
   std::size_t shadowPass(const render::ShadingLights& frame, GlFrameStats& stats);
@@ -109,7 +114,7 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
       options, scene::sceneBounds(scene), scene.materials, {}, std::move(*lighting),
       std::move(*background), std::move(*depth), LightTextures(geometry), std::move(*atlas),
       EnvironmentCube(), std::move(*toneMap), std::move(*target), GlVertexArray::create(),
-      std::nullopt, 0});
+      std::nullopt, TextureBuffer(GL_RGBA32F), 0});
   impl->meshes.reserve(scene.meshes.size());
   for (const scene::Mesh& mesh : scene.meshes) impl->meshes.emplace_back(mesh);
   if (impl->atlas.capacity() < options.maxShadowMaps) {
@@ -142,6 +147,12 @@ std::size_t GlRenderer::Impl::shadowPass(const render::ShadingLights& frame,
     dirs.push_back(frame.diffuse.lights.at(frame.shadowCasters[slot]).dir);
   }
   atlas.render(dirs, bounds, depth, meshes);
+  std::vector<float> texels;
+  texels.reserve(4 * dirs.size());
+  for (const glm::vec3& d : dirs) {
+    texels.insert(texels.end(), {d.x, d.y, d.z, 0.0F});
+  }
+  casterDirs.upload(texels);
   shadowKey = frame.lightsKey;
   shadowCount = count;
   stats.shadowMapsRendered = count;
@@ -194,6 +205,8 @@ void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
   lighting.set("uShadowCapacity", int(shadowMaps));
   lighting.set("uShadowMapPx", float(atlas.tilePx()));
   lighting.set("uShadowAtlasPx", float(atlas.atlasPx()));
+  casterDirs.bind(kCasterUnit);
+  lighting.set("uShadowCasterDirs", int(kCasterUnit));
   lighting.set("uSceneCentre", bounds.centre());
   lighting.set("uShadowRadius", shadowFrameRadius(bounds));
   environment.bind(kEnvironmentUnit);

@@ -149,6 +149,15 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
 }  // namespace
 
 int runViewer(const ViewerOptions& options) {
+  std::optional<FrameWriter> writer;
+  if (!options.outDir.empty()) {
+    auto opened = FrameWriter::open(options.outDir, options.png, options.exr);
+    if (!opened) {
+      spdlog::error("{}", opened.error());
+      return EXIT_FAILURE;
+    }
+    writer.emplace(std::move(*opened));
+  }
   auto scene = loadSceneArgument(options.scene);
   if (!scene) {
     spdlog::error("{}", scene.error());
@@ -179,14 +188,7 @@ int runViewer(const ViewerOptions& options) {
   }
   v.renderer = std::move(*renderer);
   fmt::print(stderr, "vemview: renderer {}\n", v.renderer->name());
-  if (!options.outDir.empty()) {
-    auto writer = FrameWriter::open(options.outDir, options.png, options.exr);
-    if (!writer) {
-      spdlog::error("{}", writer.error());
-      return EXIT_FAILURE;
-    }
-    v.writer.emplace(std::move(*writer));
-  }
+  v.writer = std::move(writer);
   if (v.plan.targetFrameMs) {
     v.adaptive.emplace(*v.plan.targetFrameMs, v.plan.lighting.lightCount, 4, 4096);
   }

@@ -27,7 +27,8 @@ void writeLogLogSvg(const std::filesystem::path& path, const std::string& xLabel
     for (auto [x, y] : s.points) {
       x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
-  const double lx0 = std::floor(std::log10(x0)), lx1 = std::ceil(std::log10(x1));
+  // The right edge leaves room for the last point's label.
+  const double lx0 = std::floor(std::log10(x0)), lx1 = std::ceil(std::log10(x1) + 0.1);
   const double ly0 = std::floor(std::log10(y0)), ly1 = std::ceil(std::log10(y1));
   const auto px = [&](double x) {
     return kLeft + (std::log10(x) - lx0) / (lx1 - lx0) * (kWidth - kLeft - kRight);

@@ -1,7 +1,9 @@
 // The OpenGL renderer against the Embree renderer and the Monte Carlo reference, on the default
 // scene under a real HDRI: with the same lights the two renderers agree up to shadow-map
 // resolution, and the OpenGL image approaches the reference as the light count grows.
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 #include <gtest/gtest.h>
 
 #include "client/render/image_metrics.h"
@@ -31,12 +33,53 @@ TEST(RendererAgreement, OpenGlAndEmbreeAgreeWithTheSameLightsOnTheGlossyDefaultS
   RigOptions options;
   options.sceneName = "default";
   RenderRig rig(options);
+  const render::ShadingLights lights = rig.lights(256, 256);
+  const render::ImageError e = render::compareImages(rig.gl(lights), rig.embree(lights));
+  std::printf("default scene, N = 256, S = 256: relative RMS %.4f, mean |dY| %.4f, >10%%: %.4f\n",
+              e.relativeRms, e.meanAbsoluteRelative, e.fractionAbove(0.1));
+  EXPECT_LT(e.relativeRms, 0.05);
+  EXPECT_LT(e.fractionAbove(0.1), 0.03);
+}
+
+// Lights without a map of their own are shadowed through the nearest caster's map, looked up in
+// that caster's view (a lookup in the light's own view gave 18 % RMS here).
+TEST(RendererAgreement, LightsWithoutTheirOwnMapUseTheNearestCastersView) {
+  RigOptions options;
+  options.sceneName = "default";
+  RenderRig rig(options);
   const render::ShadingLights lights = rig.lights(256, 64);
   const render::ImageError e = render::compareImages(rig.gl(lights), rig.embree(lights));
-  std::printf("default scene, N = 256, S = 64: relative RMS %.4f, mean |dY| %.4f, >10%%: %.4f\n",
-              e.relativeRms, e.meanAbsoluteRelative, e.fractionAbove(0.1));
-  EXPECT_LT(e.relativeRms, 0.08);
-  EXPECT_LT(e.fractionAbove(0.1), 0.05);
+  std::printf("default scene, N = 256, S = 64: relative RMS %.4f, mean |dY| %.4f\n",
+              e.relativeRms, e.meanAbsoluteRelative);
+  EXPECT_LT(e.relativeRms, 0.07);
+  EXPECT_LT(e.meanAbsoluteRelative, 0.04);
+}
+
+// The error table of the issue: the OpenGL image against the Monte Carlo reference as N grows
+// (S = min(N, 256) shadow maps), beside the Embree renderer with the same lights.
+TEST(RendererConvergence, OpenGlImageApproachesTheReferenceAsTheLightCountGrows) {
+  RigOptions options;
+  options.sceneName = "diffuse";
+  options.widthPx = 96;
+  options.heightPx = 72;
+  RenderRig rig(options);
+  const embree::ReferenceResult reference = rig.reference(0.01, 2048);
+  std::printf("reference: %d samples per pixel, relative error %.4f\n", reference.samplesPerPixel,
+              reference.relativeError);
+  std::printf("%6s %6s %12s %12s\n", "N", "S", "GL rel RMS", "Embree rel RMS");
+  std::vector<double> glErrors;
+  for (std::size_t n : {4, 16, 64, 256, 1024}) {
+    const render::ShadingLights lights = rig.lights(n, std::min<std::size_t>(n, 256));
+    const double gl = render::compareImages(rig.gl(lights), reference.image).relativeRms;
+    const double cpu = render::compareImages(rig.embree(lights), reference.image).relativeRms;
+    std::printf("%6zu %6zu %12.4f %12.4f\n", n, std::min<std::size_t>(n, 256), gl, cpu);
+    glErrors.push_back(gl);
+  }
+  EXPECT_LT(glErrors[1], glErrors[0]);
+  EXPECT_LT(glErrors[2], glErrors[1]);
+  EXPECT_LT(glErrors[3], glErrors[2]);
+  EXPECT_LT(glErrors[4], glErrors[3]);
+  EXPECT_LT(glErrors[4], 0.06);
 }
 
 }  // namespace

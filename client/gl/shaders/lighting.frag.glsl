@@ -50,7 +50,7 @@ vec3 diffuseLighting(vec3 n, vec3 wo, vec3 p) {
     vec3 f = diffuseBrdf();
     if (uSpecularFromDiffuse != 0) f += specularBrdf(n, wo, dirSlot.xyz);
     vec3 rgb = texelFetch(uDiffuseLights, 2 * i + 1).rgb;
-    sum += f * rgb * cosNL * visibility(int(dirSlot.w), p, dirSlot.xyz, cosNL);
+    sum += f * rgb * cosNL * visibility(int(dirSlot.w), p, cosNL);
   }
   return sum;
 }
@@ -71,7 +71,7 @@ vec3 glossyLighting(vec3 n, vec3 wo, vec3 p) {
     float cosNL = max(0.0, dot(n, dirSlot.xyz));
     vec3 rgb = texelFetch(uLowLights, 2 * i + 1).rgb;
     cone += specularBrdf(n, wo, dirSlot.xyz) * rgb * cosNL *
-            visibility(int(dirSlot.w), p, dirSlot.xyz, cosNL);
+            visibility(int(dirSlot.w), p, cosNL);
   }
   if (inCone > uMaxConeLights) cone *= float(inCone) / float(uMaxConeLights);
   ivec2 high = regionRange(uHighRegions, uHighOffsets, r);
@@ -84,7 +84,7 @@ vec3 glossyLighting(vec3 n, vec3 wo, vec3 p) {
     float cosNL = max(0.0, dot(n, dirSlot.xyz));
     vec3 rgb = texelFetch(uHighLights, 2 * i + 1).rgb;
     outside += specularBrdf(n, wo, dirSlot.xyz) * rgb * cosNL *
-               visibility(int(dirSlot.w), p, dirSlot.xyz, cosNL);
+               visibility(int(dirSlot.w), p, cosNL);
   }
   return cone + outside;
 }

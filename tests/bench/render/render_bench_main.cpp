@@ -1,0 +1,239 @@
+// vem_render_bench: what accuracy costs in time (issue 7): the default scene under a few real
+// HDRIs, rendered by the OpenGL and the Embree renderers over sweeps of the light count, the
+// shadowed lights, the shadow-map resolution, angular regions and clustering (study_sweeps.h),
+// each frame timed and compared with the Embree Monte Carlo reference (cached in the build folder).
+//
+//   vem_render_bench [--maps sky,park,city] [--list-maps] [--table docs/render-accuracy.md]
+//                    [--plot docs/render-accuracy-vs-time.png] [--section build/render.md]
+//                    [--cache DIR] [--reference-error 0.01] [--no-gl]
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "bench/markdown_output.h"
+#include "bench/render/render_report.h"
+#include "bench/render/study_run.h"
+#include "mapio/map_file.h"
+
+namespace {
+
+using namespace vem::bench;
+
+struct BenchOptions {
+  // One map per kind of light (--list-maps): a sun (58 % of the power in 0.1 % of the sphere), a
+  // few bright sources over a broad sky (12 %), broad indoor light (0.7 %).
+  std::vector<std::string> maps{"sky", "park", "city"};
+  std::string hdriDir = std::string(VEM_SHARED_DATA_DIR) + "/hdri";
+  StudyImageSize size;
+  double referenceError = 0.01;
+  int referenceMaxSamples = 8192;
+  std::string cacheDir = "render-bench-cache";
+  int glFrames = 5;
+  int embreeFrames = 3;
+  bool noGl = false;
+  bool listMaps = false;
+  std::string sweeps = "abcde";
+  std::string table;
+  std::string plot;
+  std::string section;
+};
+
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown CPU";
+}
+
+std::string machine() {
+  std::ifstream loadavg("/proc/loadavg");
+  double load = 0.0;
+  loadavg >> load;
+  return fmt::format("{}, {} hardware threads, load average {:.1f} at the start", cpuModel(),
+                     std::thread::hardware_concurrency(), load);
+}
+
+// The arguments with the project folder left out of paths, for the report.
+std::string commandLine(int argc, char** argv) {
+  const std::string project = std::string(VEM_PROJECT_DIR) + "/";
+  std::string out = "vem_render_bench";
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg.rfind(project, 0) == 0) arg = arg.substr(project.size());
+    out += fmt::format(" {}", arg);
+  }
+  return out;
+}
+
+int fail(const std::string& message) {
+  std::cerr << "vem_render_bench: " << message << "\n";
+  return 1;
+}
+
+int parse(int argc, char** argv, BenchOptions& o) {
+  CLI::App app{"The render study: accuracy against time for the OpenGL and Embree renderers"};
+  app.add_option("--maps", o.maps, "HDRIs of the shared data (names without .exr)")->delimiter(',');
+  app.add_option("--hdri-dir", o.hdriDir, "the folder of the HDRIs");
+  app.add_option("--width", o.size.widthPx)->check(CLI::Range(16, 4096));
+  app.add_option("--height", o.size.heightPx)->check(CLI::Range(16, 4096));
+  app.add_option("--reference-error", o.referenceError, "the reference's target error")
+      ->check(CLI::Range(1e-4, 0.5));
+  app.add_option("--reference-max-samples", o.referenceMaxSamples)->check(CLI::Range(16, 1 << 20));
+  app.add_option("--cache", o.cacheDir, "the folder of cached references");
+  app.add_option("--gl-frames", o.glFrames, "timed OpenGL frames per point")
+      ->check(CLI::Range(1, 100));
+  app.add_option("--embree-frames", o.embreeFrames)->check(CLI::Range(1, 100));
+  app.add_flag("--no-gl", o.noGl, "Embree only (no OpenGL context)");
+  app.add_flag("--list-maps", o.listMaps, "print how concentrated each HDRI's light is, and exit");
+  app.add_option("--sweeps", o.sweeps, "the sweeps to run, e.g. ad (study_sweeps.h)");
+  app.add_option("--table", o.table, "write the study (markdown) to this file");
+  app.add_option("--plot", o.plot, "write the error-against-time plot (PNG, and SVG beside it)");
+  app.add_option("--section", o.section, "write the docs/BENCHMARKS.md section to this file");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? -1 : 2;
+  }
+  return 0;
+}
+
+// Every HDRI of the folder with its character (what the choice of --maps rests on).
+int listMaps(const BenchOptions& o) {
+  std::vector<std::filesystem::path> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(o.hdriDir)) {
+    if (entry.path().extension() == ".exr") paths.push_back(entry.path());
+  }
+  std::ranges::sort(paths);
+  fmt::print(
+      "| map | peak / mean luminance | power in the brightest 0.1 % | character |\n"
+      "|---|---:|---:|---|\n");
+  for (const auto& path : paths) {
+    auto map = vem::mapio::loadMap(path);
+    if (!map) return fail(map.error().message);
+    const MapCharacter c = characterOf(*map);
+    fmt::print("| {} | {:.0f} | {} | {} |\n", path.stem().string(), c.peakToMean,
+               percent(c.topShareOfPower), describeCharacter(c));
+  }
+  return 0;
+}
+
+// Links from the table's folder (docs/, where BENCHMARKS.md includes the section too).
+std::string linkTo(const std::string& target, const std::string& table) {
+  if (target.empty()) return "";
+  if (table.empty()) return std::filesystem::path(target).filename().string();
+  const std::filesystem::path base = std::filesystem::absolute(table).parent_path();
+  return std::filesystem::absolute(target).lexically_relative(base).string();
+}
+
+int writeOutputs(const BenchOptions& o, const StudyContext& context,
+                 const std::vector<Sweep>& sweeps, const std::vector<MapStudy>& studies) {
+  const std::string plotLink = linkTo(o.plot, o.table);
+  if (!o.plot.empty()) {
+    if (auto written = writeAccuracyPlot(o.plot, sweeps, studies); !written) {
+      return fail(written.error());
+    }
+  }
+  if (!emitMarkdown("vem_render_bench", accuracyReport(context, sweeps, studies, plotLink),
+                    o.table)) {
+    return 1;
+  }
+  if (o.section.empty()) return 0;
+  std::ofstream section(o.section);
+  section << benchmarkSection(context, sweeps, studies, linkTo(o.table, o.table), plotLink);
+  return section ? 0 : fail("cannot write " + o.section);
+}
+
+// The OpenGL renderer unless --no-gl; its labels go into the context.
+std::expected<std::optional<GlStudyRenderer>, std::string> openGl(
+    const BenchOptions& o, const StudyScene& scene, const vem::render::LightingGeometry& geometry,
+    StudyContext& context) {
+  if (o.noGl) return std::optional<GlStudyRenderer>{};
+  auto made = makeGlStudyRenderer(scene, geometry, o.size, o.glFrames);
+  if (!made) return std::unexpected(made.error() + " (--no-gl runs the Embree half alone)");
+  context.glLabel = made->timingLabel;
+  context.glRenderer = fmt::format("{}, {}", made->rendererName, made->version);
+  context.glSoftware = made->software;
+  return std::optional<GlStudyRenderer>(std::move(*made));
+}
+
+struct StudyInputs {
+  const StudyScene& scene;
+  const vem::embree::EmbreeScene& embreeScene;
+  const vem::render::LightingGeometry& geometry;
+  const std::vector<Sweep>& sweeps;
+  StudyRenderers renderers;
+};
+
+// One map: its reference (cached) and every sweep point.
+std::expected<MapStudy, std::string> studyMap(const BenchOptions& o, const std::string& name,
+                                              const StudyInputs& in, StudyContext& context) {
+  auto map = loadStudyMap(std::filesystem::path(o.hdriDir) / (name + ".exr"));
+  if (!map) return std::unexpected(map.error());
+  vem::embree::ReferenceOptions referenceOptions;
+  referenceOptions.targetRelativeError = o.referenceError;
+  referenceOptions.maxSamples = o.referenceMaxSamples;
+  auto reference = cachedReference(in.embreeScene, in.scene, *map, o.size.widthPx, o.size.heightPx,
+                                   referenceOptions, o.cacheDir);
+  if (!reference) return std::unexpected(reference.error());
+  fmt::print(stderr, "{}: reference {} samples per pixel, error {:.4f}, {:.0f} s{}\n", name,
+             reference->samplesPerPixel, reference->relativeError, reference->renderSeconds,
+             reference->fromCache ? " (cached)" : "");
+  context.mapReasons.push_back(describeCharacter(map->character));
+  return runMapStudy(*map, in.scene, in.geometry, *reference, in.sweeps, in.renderers);
+}
+
+// Renders the study and writes the outputs.
+int run(const BenchOptions& o, StudyContext context) {
+  const auto started = std::chrono::steady_clock::now();
+  auto scene = studyScene();
+  if (!scene) return fail(scene.error());
+  context.sceneDescription = scene->description;
+  auto embreeScene = vem::embree::EmbreeScene::build(scene->scene);
+  if (!embreeScene) return fail(embreeScene.error());
+  const vem::render::LightingGeometry geometry = vem::render::makeLightingGeometry();
+  auto gl = openGl(o, *scene, geometry, context);
+  if (!gl) return fail(gl.error());
+  const auto embree =
+      makeEmbreeStudyRenderer(*embreeScene, *scene, geometry, o.size, o.embreeFrames);
+  std::vector<Sweep> sweeps = studySweeps(gl->has_value());
+  std::erase_if(sweeps, [&](const Sweep& s) { return !o.sweeps.contains(s.id); });
+  const StudyInputs inputs{*scene,
+                           *embreeScene,
+                           geometry,
+                           sweeps,
+                           {*gl ? (*gl)->renderer.get() : nullptr, embree.get()}};
+  std::vector<MapStudy> studies;
+  for (const std::string& name : o.maps) {
+    auto study = studyMap(o, name, inputs, context);
+    if (!study) return fail(study.error());
+    studies.push_back(std::move(*study));
+  }
+  context.studySeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return writeOutputs(o, context, sweeps, studies);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  BenchOptions options;
+  if (const int parsed = parse(argc, argv, options); parsed != 0) return parsed < 0 ? 0 : parsed;
+  if (options.listMaps) return listMaps(options);
+  StudyContext context;
+  context.command = commandLine(argc, argv);
+  context.machine = machine();
+  context.widthPx = options.size.widthPx;
+  context.heightPx = options.size.heightPx;
+  context.referenceTarget = options.referenceError;
+  context.glFrames = options.glFrames;
+  context.embreeFrames = options.embreeFrames;
+  return run(options, std::move(context));
+}

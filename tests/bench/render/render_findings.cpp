@@ -1,0 +1,218 @@
+// The generated sentences of render_report.h (studyFindings) and the BENCHMARKS.md section.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "bench/render/render_report.h"
+
+namespace vem::bench {
+namespace {
+
+const SweepSeries* findSeries(const std::vector<Sweep>& sweeps, const std::string& id,
+                              const std::string& name) {
+  for (const Sweep& sweep : sweeps) {
+    if (sweep.id != id) continue;
+    for (const SweepSeries& series : sweep.series) {
+      if (series.name == name) return &series;
+    }
+  }
+  return nullptr;
+}
+
+std::optional<StudyConfig> configAt(const std::vector<Sweep>& sweeps, const std::string& id,
+                                    const std::string& series, const std::string& label) {
+  const SweepSeries* s = findSeries(sweeps, id, series);
+  if (s == nullptr) return std::nullopt;
+  for (const SweepPoint& point : s->points) {
+    if (point.label == label) return point.config;
+  }
+  return std::nullopt;
+}
+
+std::string lightCountSentence(const std::vector<Sweep>& sweeps,
+                               const std::vector<MapStudy>& studies) {
+  std::string out;
+  for (const char* renderer : {"OpenGL", "Embree"}) {
+    const SweepSeries* s = findSeries(sweeps, "a", renderer);
+    if (s == nullptr) continue;
+    const StudyConfig& first = s->points.front().config;
+    const StudyConfig& last = s->points.back().config;
+    out += fmt::format(
+        "{}{} goes from {} relative RMS error at N = {} to {} at N = {} while its frame time "
+        "goes from {} to {} ms",
+        out.empty() ? "Over the maps (geometric mean of the error, mean time), " : "; ", renderer,
+        percent(meanError(studies, first)), s->points.front().label,
+        percent(meanError(studies, last)), s->points.back().label,
+        milliseconds(meanTimeMs(studies, first)), milliseconds(meanTimeMs(studies, last)));
+  }
+  return out + ".";
+}
+
+std::string gapSentence(const std::vector<Sweep>& sweeps, const std::vector<MapStudy>& studies) {
+  const SweepSeries* gl = findSeries(sweeps, "a", "OpenGL");
+  const SweepSeries* embree = findSeries(sweeps, "a", "Embree");
+  if (gl == nullptr || embree == nullptr) return "";
+  const auto best = std::ranges::min_element(
+      gl->points, {}, [&](const SweepPoint& p) { return meanError(studies, p.config); });
+  const StudyConfig& last = gl->points.back().config;
+  const double ratio =
+      meanError(studies, last) / std::max(meanError(studies, embree->points.back().config), 1e-12);
+  return fmt::format(
+      " OpenGL's error is smallest at N = {} ({}, {} ms); at N = {} it is {:.1f} times Embree's, "
+      "the part the shadow maps add: {} of the {} lights have a map of their own, the others take "
+      "the map of the nearest caster.",
+      best->label, percent(meanError(studies, best->config)),
+      milliseconds(meanTimeMs(studies, best->config)), gl->points.back().label, ratio,
+      last.lighting.shadowedCount, last.lighting.lightCount);
+}
+
+std::string shadowSentence(const std::vector<Sweep>& sweeps, const std::vector<MapStudy>& studies) {
+  const auto s0 = configAt(sweeps, "b", "OpenGL", "0");
+  const auto s64 = configAt(sweeps, "b", "OpenGL", "64");
+  const auto s256 = configAt(sweeps, "b", "OpenGL", "256");
+  const auto px64 = configAt(sweeps, "c", "OpenGL", "64");
+  const auto px1024 = configAt(sweeps, "c", "OpenGL", "1024");
+  if (!s0 || !s64 || !s256 || !px64 || !px1024) return "";
+  return fmt::format(
+      " At N = 256, OpenGL without shadows has {} error, with S = 64 shadow maps {} ({} ms more) "
+      "and with S = 256 {} ({} ms more); shadow maps of 64 px give {} and of 1024 px {} at {} "
+      "and {} ms.",
+      percent(meanError(studies, *s0)), percent(meanError(studies, *s64)),
+      milliseconds(meanTimeMs(studies, *s64) - meanTimeMs(studies, *s0)),
+      percent(meanError(studies, *s256)),
+      milliseconds(meanTimeMs(studies, *s256) - meanTimeMs(studies, *s0)),
+      percent(meanError(studies, *px64)), percent(meanError(studies, *px1024)),
+      milliseconds(meanTimeMs(studies, *px64)), milliseconds(meanTimeMs(studies, *px1024)));
+}
+
+// "OpenGL 0.61 (N = 16) to 1.30 (N = 1024), ...": the smallest and largest time ratio of regions
+// on to off, and the largest change of the error.
+std::optional<std::string> regionRatios(const std::vector<Sweep>& sweeps,
+                                        const std::vector<MapStudy>& studies,
+                                        const std::string& renderer) {
+  const SweepSeries* on = findSeries(sweeps, "d", renderer + ", regions on");
+  const SweepSeries* off = findSeries(sweeps, "d", renderer + ", regions off");
+  if (on == nullptr || off == nullptr || on->points.size() != off->points.size()) {
+    return std::nullopt;
+  }
+  std::vector<std::pair<double, std::string>> ratios;
+  double errorChange = 0.0;
+  for (std::size_t i = 0; i < on->points.size(); ++i) {
+    errorChange = std::max(errorChange, std::abs(meanError(studies, on->points[i].config) -
+                                                 meanError(studies, off->points[i].config)));
+    ratios.emplace_back(
+        meanTimeMs(studies, on->points[i].config) / meanTimeMs(studies, off->points[i].config),
+        on->points[i].label);
+  }
+  const auto [low, high] = std::ranges::minmax_element(ratios);
+  return fmt::format("{} {:.2f} (N = {}) to {:.2f} (N = {}), its error changing by at most {}",
+                     renderer, low->first, low->second, high->first, high->second,
+                     percent(errorChange));
+}
+
+std::string clusterPart(const std::vector<Sweep>& sweeps, const std::vector<MapStudy>& studies,
+                        const std::string& renderer) {
+  const auto q32 = configAt(sweeps, "e", renderer + ", N = 1024", "32");
+  const auto off = configAt(sweeps, "e", renderer + ", N = 1024", "off");
+  if (!q32 || !off) return "";
+  return fmt::format("{} from {} to {} ms ({} error against {})", renderer,
+                     milliseconds(meanTimeMs(studies, *off)),
+                     milliseconds(meanTimeMs(studies, *q32)), percent(meanError(studies, *q32)),
+                     percent(meanError(studies, *off)));
+}
+
+std::string regionClusterSentence(const std::vector<Sweep>& sweeps,
+                                  const std::vector<MapStudy>& studies) {
+  std::vector<std::string> ratios;
+  std::vector<std::string> clusters;
+  for (const std::string renderer : {"OpenGL", "Embree"}) {
+    if (auto r = regionRatios(sweeps, studies, renderer)) ratios.push_back(*r);
+    if (auto c = clusterPart(sweeps, studies, renderer); !c.empty()) clusters.push_back(c);
+  }
+  std::string out;
+  if (!ratios.empty()) {
+    out += fmt::format(
+        " Angular regions multiply the frame time by {} over N = 16 ... 1024 (below 1 they save "
+        "time)",
+        fmt::join(ratios, " and "));
+  }
+  if (!clusters.empty()) {
+    out += fmt::format("{}clustering the 1024 lights to Q = 32 takes {}", out.empty() ? " " : "; ",
+                       fmt::join(clusters, " and "));
+  }
+  return out.empty() ? out : out + ".";
+}
+
+std::string hardestMapSentence(const std::vector<Sweep>& sweeps,
+                               const std::vector<MapStudy>& studies) {
+  const SweepSeries* s = findSeries(sweeps, "a", "OpenGL");
+  if (s == nullptr) s = findSeries(sweeps, "a", "Embree");
+  if (s == nullptr || studies.size() < 2) return "";
+  const auto base = configAt(sweeps, "a", s->name, "256");
+  if (!base) return "";
+  const auto byError = [&](const MapStudy& a, const MapStudy& b) {
+    return a.at(*base).relativeRms < b.at(*base).relativeRms;
+  };
+  const MapStudy& hardest = *std::ranges::max_element(studies, byError);
+  const MapStudy& easiest = *std::ranges::min_element(studies, byError);
+  const MapStudy& peakiest = *std::ranges::max_element(studies, {}, &MapStudy::topShareOfPower);
+  return fmt::format(
+      " The hardest map at N = 256 ({}) is {} ({} error against {} on {}){}.", s->name, hardest.map,
+      percent(hardest.at(*base).relativeRms), percent(easiest.at(*base).relativeRms), easiest.map,
+      &hardest == &peakiest
+          ? fmt::format(", the one with the largest share of its power in its brightest 0.1 % ({})",
+                        percent(hardest.topShareOfPower))
+          : "");
+}
+
+}  // namespace
+
+std::string studyFindings(const std::vector<Sweep>& sweeps, const std::vector<MapStudy>& studies) {
+  if (studies.empty()) return "No map was studied.";
+  return lightCountSentence(sweeps, studies) + gapSentence(sweeps, studies) +
+         shadowSentence(sweeps, studies) + regionClusterSentence(sweeps, studies) +
+         hardestMapSentence(sweeps, studies);
+}
+
+std::string benchmarkSection(const StudyContext& context, const std::vector<Sweep>& sweeps,
+                             const std::vector<MapStudy>& studies, const std::string& tableName,
+                             const std::string& plotName) {
+  std::string md = fmt::format(
+      "## Rendering: accuracy against time (vem_render_bench)\n\n"
+      "`cmake --build build --target render-bench`: the default scene at {} x {} under {} real "
+      "HDRIs, error against the Embree Monte Carlo reference (relative RMS, geometric mean over "
+      "the maps) and median frame time (mean over the maps), S = min(N, 64) shadow maps of "
+      "256 px, regions on. OpenGL: {}. Every sweep, the maps one by one and the plot: "
+      "[{}]({}).\n\n| N |",
+      context.widthPx, context.heightPx, studies.size(),
+      context.glLabel.empty() ? "not measured"
+      : context.glSoftware    ? fmt::format("{}, software renderer, not a GPU", context.glLabel)
+                              : context.glLabel,
+      tableName, tableName);
+  const auto found = std::ranges::find(sweeps, std::string("a"), &Sweep::id);
+  if (found == sweeps.end()) return md + "(The light-count sweep was not run.)\n\n";
+  const Sweep& a = *found;
+  std::string rule = "|---:|";
+  for (const SweepSeries& series : a.series) {
+    md += fmt::format(" {0} ms | {0} error |", series.name);
+    rule += "---:|---:|";
+  }
+  md += fmt::format("\n{}\n", rule);
+  for (std::size_t i = 0; i < a.series.front().points.size(); i += 2) {
+    md += fmt::format("| {} |", a.series.front().points[i].label);
+    for (const SweepSeries& series : a.series) {
+      const StudyConfig& config = series.points[i].config;
+      md += fmt::format(" {} | {} |", milliseconds(meanTimeMs(studies, config)),
+                        percent(meanError(studies, config)));
+    }
+    md += "\n";
+  }
+  md += fmt::format("\n{}\n\n", studyFindings(sweeps, studies));
+  if (!plotName.empty()) md += fmt::format("![accuracy against time]({})\n\n", plotName);
+  return md;
+}
+
+}  // namespace vem::bench

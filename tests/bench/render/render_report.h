@@ -1,0 +1,67 @@
+// The render study's outputs: docs/render-accuracy.md (the machine, the renderers, the references
+// and one table per sweep with the maps as columns, closed by a few sentences computed from the
+// numbers), the error-against-time plot (SVG, converted to PNG by rsvg-convert), and the short
+// section docs/BENCHMARKS.md includes.
+//
+// Errors are fractions of the reference (shown as percentages); times are median wall-clock
+// milliseconds per 320 x 240 frame (or the study's size).
+#pragma once
+
+#include <expected>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bench/render/study_run.h"
+#include "bench/render/study_sweeps.h"
+
+namespace vem::bench {
+
+struct StudyContext {
+  std::string command;     // how the study was run
+  std::string machine;     // CPU model and cores
+  std::string glLabel;     // empty without OpenGL
+  std::string glRenderer;  // GL_RENDERER and GL_VERSION
+  bool glSoftware = true;
+  std::string sceneDescription;
+  int widthPx = 320;
+  int heightPx = 240;
+  double referenceTarget = 0.01;
+  int glFrames = 5;
+  int embreeFrames = 3;
+  double studySeconds = 0.0;            // the whole run, references included
+  std::vector<std::string> mapReasons;  // one per map: why it is in the study
+};
+
+[[nodiscard]] std::string accuracyReport(const StudyContext& context,
+                                         const std::vector<Sweep>& sweeps,
+                                         const std::vector<MapStudy>& studies,
+                                         const std::string& plotName);
+
+// 3-5 sentences on what the numbers say, computed from them.
+[[nodiscard]] std::string studyFindings(const std::vector<Sweep>& sweeps,
+                                        const std::vector<MapStudy>& studies);
+
+// The section for docs/BENCHMARKS.md: a summary table and links (relative to docs/).
+[[nodiscard]] std::string benchmarkSection(const StudyContext& context,
+                                           const std::vector<Sweep>& sweeps,
+                                           const std::vector<MapStudy>& studies,
+                                           const std::string& tableName,
+                                           const std::string& plotName);
+
+// Writes the SVG beside `pngPath` (same stem) and converts it with rsvg-convert.
+[[nodiscard]] std::expected<void, std::string> writeAccuracyPlot(
+    const std::filesystem::path& pngPath, const std::vector<Sweep>& sweeps,
+    const std::vector<MapStudy>& studies);
+
+// What the numbers say about a map's light, e.g. "a small, very bright source (a sun): ...".
+[[nodiscard]] std::string describeCharacter(const MapCharacter& character);
+
+// Helpers shared by the report's parts.
+[[nodiscard]] std::string percent(double fraction);  // "4.12 %"
+[[nodiscard]] std::string milliseconds(double ms);   // "12.3"
+// Geometric mean over the maps of an error, arithmetic mean of a time.
+[[nodiscard]] double meanError(const std::vector<MapStudy>& studies, const StudyConfig& config);
+[[nodiscard]] double meanTimeMs(const std::vector<MapStudy>& studies, const StudyConfig& config);
+
+}  // namespace vem::bench
