@@ -132,6 +132,7 @@ std::expected<std::unique_ptr<LightInput>, std::string> openLightFileInput(
                                   frames.front()->lights.size(), clustered ? ", clustered" : "");
   facts.layout = MapLayout::Hemisphere;
   facts.clustered = clustered;
+  facts.cubeMaps = false;
   return std::make_unique<LightFileInput>(std::move(facts), std::move(frames));
 }
 

@@ -37,6 +37,7 @@ struct InputFacts {
   MapLayout layout = MapLayout::Hemisphere;
   bool clustered = false;  // the lights are clusters already (vemd --cluster in a light file)
   bool live = false;       // frames keep coming (stream)
+  bool cubeMaps = true;    // the input can give cube maps (a light file cannot)
 };
 
 class LightInput {

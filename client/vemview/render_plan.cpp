@@ -11,8 +11,10 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
   plan.glossyPass = scene::anyGlossy(scene);
   plan.glossyReason = plan.glossyPass ? "a material is glossy" : "no glossy material";
   const bool mirror = scene::anyMirrorLike(scene);
-  plan.cubeMap = plan.glossyPass || request.backgroundWanted;
-  plan.cubeMapReason = plan.glossyPass ? (mirror ? "mirror-like reflections" : "glossy reflections")
+  const bool wanted = plan.glossyPass || request.backgroundWanted;
+  plan.cubeMap = wanted && request.inputHasCubeMaps;
+  plan.cubeMapReason = !request.inputHasCubeMaps && wanted ? "the input carries none"
+                       : plan.glossyPass ? (mirror ? "mirror-like reflections" : "glossy reflections")
                        : request.backgroundWanted ? "background asked for"
                                                   : "no glossy material";
   const bool canShadow = scene::canCastShadows(scene);

@@ -33,6 +33,7 @@ struct PlanRequest {
   bool backgroundWanted = false;        // --background
   std::optional<double> targetFrameMs;  // adaptive light count
   bool inputClustered = false;          // the input's lights are clusters already
+  bool inputHasCubeMaps = true;         // a light file has none
   MapLayout inputLayout = MapLayout::Hemisphere;
 };
 

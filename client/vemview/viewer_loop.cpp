@@ -52,6 +52,7 @@ PlanRequest requestFor(const ViewerOptions& o, const InputFacts& facts) {
   request.targetFrameMs = o.targetFrameMs;
   request.inputClustered = facts.clustered;
   request.inputLayout = facts.layout;
+  request.inputHasCubeMaps = facts.cubeMaps;
   return request;
 }
 

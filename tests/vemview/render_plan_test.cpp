@@ -95,3 +95,24 @@ TEST(FrameDecision, NewLightsOrANewCountRebuildTheLights) {
 
 }  // namespace
 }  // namespace vem::view
+
+namespace vem::view {
+namespace {
+
+TEST(RenderPlan, LightFileWithoutCubeMapsSaysSoInsteadOfPromisingOne) {
+  scene::Scene s;
+  s.materials = {scene::Material{}};
+  s.materials[0].lobe = scene::Lobe::Blinn;
+  s.materials[0].specularAlbedo = glm::vec3(0.5F);
+  s.materials[0].exponent = 50.0F;
+  s.meshes = {scene::sphereMesh({0, 0, 0}, 1.0F)};
+  PlanRequest request;
+  request.inputHasCubeMaps = false;
+  const RenderPlan plan = planFor(s, request);
+  EXPECT_TRUE(plan.glossyPass);
+  EXPECT_FALSE(plan.cubeMap);
+  EXPECT_NE(plan.describe().find("no cube map (the input carries none)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vem::view
