@@ -150,6 +150,32 @@ TEST_F(VemviewCli, LightFileFromVemtoolIsRendered) {
   EXPECT_TRUE(fs::exists(dir_ / "out" / "frame-000000.png"));
 }
 
+TEST_F(VemviewCli, ClusteringCutsTheLightsAndShadowsEachCluster) {
+  const ViewRun r = run(" --headless --width 64 --height 48 --count 256 --shadowed 64 --cluster 8 "
+                        "--scene spheres --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
+  ASSERT_EQ(lines.size(), 1U);
+  const int lights = lines[0]["lights"].get<int>();
+  EXPECT_GE(lights, 4);
+  EXPECT_LE(lights, 24);
+  EXPECT_EQ(lines[0]["shadowed"].get<int>(), lights);  // fewer clusters than maps: all shadowed
+  EXPECT_NE(r.err.find("clustering Q 8"), std::string::npos) << r.err;
+}
+
+TEST_F(VemviewCli, AdaptiveCountHalvesTowardAnUnreachableTargetDownToItsFloor) {
+  const ViewRun r = run(" --headless --width 64 --height 48 --count 256 --shadowed 8 "
+                        "--target-ms 0.001 --orbit 1 --frames 8 --scene spheres --no-png --no-exr "
+                        "--out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
+  ASSERT_EQ(lines.size(), 8U);
+  EXPECT_EQ(lines[0]["lights"].get<int>(), 256);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    EXPECT_EQ(lines[i]["lights"].get<int>(), std::max(4, 256 >> i)) << "frame " << i;
+  }
+}
+
 TEST_F(VemviewCli, MissingSceneFileIsOneSentenceNamingIt) {
   expectRefused(kSmall + "--scene " + path("nothere.obj"), "nothere.obj");
 }
