@@ -2,6 +2,7 @@
 
 #include <array>
 #include <string_view>
+#include <utility>
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
@@ -124,6 +125,7 @@ std::expected<std::unique_ptr<GlContext>, std::string> GlContext::window(
   }
   std::unique_ptr<GlContext> context(new GlContext());
   context->window_ = window;
+  context->installInputCallbacks();
   context->makeCurrent();
   glfwSwapInterval(0);
   if (std::string error = context->readGlInfo(); !error.empty()) return std::unexpected(error);
@@ -162,6 +164,37 @@ bool GlContext::shouldClose() const {
 
 void GlContext::pollEvents() {
   if (window_ != nullptr) glfwPollEvents();
+}
+
+void GlContext::setTitle(const std::string& title) {
+  if (window_ != nullptr) glfwSetWindowTitle(window_, title.c_str());
+}
+
+glm::dvec2 GlContext::takeLeftDragPx() { return std::exchange(dragPx_, glm::dvec2(0.0)); }
+
+void GlContext::installInputCallbacks() {
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetMouseButtonCallback(window_, &GlContext::onMouseButton);
+  glfwSetCursorPosCallback(window_, &GlContext::onCursorPos);
+  glfwSetKeyCallback(window_, &GlContext::onKey);
+}
+
+void GlContext::onMouseButton(GLFWwindow* window, int button, int action, int /*mods*/) {
+  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+  auto* self = static_cast<GlContext*>(glfwGetWindowUserPointer(window));
+  self->leftDown_ = action == GLFW_PRESS;
+  glfwGetCursorPos(window, &self->lastCursorPx_.x, &self->lastCursorPx_.y);
+}
+
+void GlContext::onCursorPos(GLFWwindow* window, double x, double y) {
+  auto* self = static_cast<GlContext*>(glfwGetWindowUserPointer(window));
+  const glm::dvec2 cursorPx{x, y};
+  if (self->leftDown_) self->dragPx_ += cursorPx - self->lastCursorPx_;
+  self->lastCursorPx_ = cursorPx;
+}
+
+void GlContext::onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+  if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(window, GLFW_TRUE);
 }
 
 glm::ivec2 GlContext::framebufferSizePx() const {

@@ -3,6 +3,9 @@
 // framebuffer to show, render into framebuffer objects) or a GLFW window (GL 3.3 core profile,
 // the default framebuffer is the window's back buffer).
 //
+// Input (windows only): Esc or the window's close button sets shouldClose(); the cursor's travel
+// while the left mouse button is held is collected between pollEvents() calls for takeLeftDragPx().
+//
 // Conventions: sizes in pixels; one context per thread; every GL object of the renderer is created
 // and destroyed while its context lives. Failures (no display, no EGL, no GL 3.3) are values: one
 // sentence saying what is missing and what to do.
@@ -34,6 +37,10 @@ class GlContext {
   [[nodiscard]] bool shouldClose() const;     // false when headless
   void pollEvents();                          // no-op when headless
   [[nodiscard]] glm::ivec2 framebufferSizePx() const;
+  void setTitle(const std::string& title);    // no-op when headless
+  // The cursor's travel with the left button held since the last call, in window pixels (x to the
+  // right, y down); zero when headless.
+  [[nodiscard]] glm::dvec2 takeLeftDragPx();
 
   [[nodiscard]] int glMajor() const { return glMajor_; }
   [[nodiscard]] int glMinor() const { return glMinor_; }
@@ -46,6 +53,10 @@ class GlContext {
 
  private:
   GlContext() = default;
+  void installInputCallbacks();
+  static void onMouseButton(GLFWwindow* window, int button, int action, int mods);
+  static void onCursorPos(GLFWwindow* window, double x, double y);
+  static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
   [[nodiscard]] std::string readGlInfo();  // fills the version fields; empty or the error
 
   void* eglDisplay_ = nullptr;  // EGLDisplay
@@ -54,6 +65,9 @@ class GlContext {
   bool ownsEglDisplay_ = false;
   GLFWwindow* window_ = nullptr;
   glm::ivec2 headlessSizePx_{0, 0};
+  bool leftDown_ = false;
+  glm::dvec2 lastCursorPx_{0.0, 0.0};
+  glm::dvec2 dragPx_{0.0, 0.0};  // collected by the callbacks, taken by takeLeftDragPx
   int glMajor_ = 0;
   int glMinor_ = 0;
   std::string renderer_;

@@ -111,6 +111,9 @@ void GlProgram::set(const char* name, float value) const { glUniform1f(location(
 void GlProgram::set(const char* name, glm::vec2 value) const {
   glUniform2fv(location(name), 1, glm::value_ptr(value));
 }
+void GlProgram::set(const char* name, glm::ivec2 value) const {
+  glUniform2iv(location(name), 1, glm::value_ptr(value));
+}
 void GlProgram::set(const char* name, glm::vec3 value) const {
   glUniform3fv(location(name), 1, glm::value_ptr(value));
 }

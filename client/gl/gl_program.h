@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "client/gl/gl_handle.h"
@@ -30,6 +31,7 @@ class GlProgram {
   void set(const char* name, int value) const;
   void set(const char* name, float value) const;
   void set(const char* name, glm::vec2 value) const;
+  void set(const char* name, glm::ivec2 value) const;
   void set(const char* name, glm::vec3 value) const;
   void set(const char* name, const glm::mat4& value) const;
 

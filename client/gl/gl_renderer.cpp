@@ -9,6 +9,7 @@
 #include "client/gl/gl_program.h"
 #include "client/gl/light_clip.h"
 #include "client/gl/light_textures.h"
+#include "client/gl/overlay_pass.h"
 #include "client/gl/shadow_atlas.h"
 #include "client/gl/texture_buffer.h"
 #include "client/gl/tone_map_pass.h"
@@ -76,6 +77,7 @@ struct GlRenderer::Impl {
   // looks it up in that caster's view, not its own.
   TextureBuffer casterDirs;
   std::size_t shadowCount = 0;
+  std::optional<OverlayPass> overlay;  // windows only (presentToWindow)
 
   std::size_t shadowPass(const render::ShadingLights& frame, GlFrameStats& stats);
   void backgroundPass(const scene::OrbitCamera& camera) const;
@@ -114,7 +116,12 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
       options, scene::sceneBounds(scene), scene.materials, {}, std::move(*lighting),
       std::move(*background), std::move(*depth), LightTextures(geometry), std::move(*atlas),
       EnvironmentCube(), std::move(*toneMap), std::move(*target), GlVertexArray::create(),
-      std::nullopt, TextureBuffer(GL_RGBA32F), 0});
+      std::nullopt, TextureBuffer(GL_RGBA32F), 0, std::nullopt});
+  if (options.presentToWindow) {
+    auto overlay = OverlayPass::create();
+    if (!overlay) return std::unexpected(overlay.error());
+    impl->overlay.emplace(std::move(*overlay));
+  }
   impl->meshes.reserve(scene.meshes.size());
   for (const scene::Mesh& mesh : scene.meshes) impl->meshes.emplace_back(mesh);
   if (impl->atlas.capacity() < options.maxShadowMaps) {
@@ -273,6 +280,11 @@ void GlRenderer::presentToneMapped(const render::ToneParams& params) {
 
 std::vector<std::uint8_t> GlRenderer::readDisplaySrgb8() const {
   return impl_->toneMap.readSrgb8(impl_->options.presentToWindow);
+}
+
+void GlRenderer::drawOverlay(std::string_view text) {
+  if (!impl_->overlay) return;
+  impl_->overlay->draw(0, {impl_->options.widthPx, impl_->options.heightPx}, text);
 }
 
 int GlRenderer::widthPx() const { return impl_->options.widthPx; }

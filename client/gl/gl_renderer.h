@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "client/render/linear_image.h"
@@ -68,8 +69,12 @@ class GlRenderer {
   // Tone-maps the last frame (render::toneMap + sRGB) into the display image (and the window).
   void presentToneMapped(const render::ToneParams& params);
   // The display image as RGB bytes, row 0 at the top (from the window's back buffer when
-  // presentToWindow, so read it before swapBuffers).
+  // presentToWindow, so read it before swapBuffers, and before drawOverlay to leave the text out).
   [[nodiscard]] std::vector<std::uint8_t> readDisplaySrgb8() const;
+  // Windows only (presentToWindow; a no-op headless): blends `text` (lines separated by '\n') over
+  // the window's back buffer, top left (overlay_pass.h), after presentToneMapped. Never part of
+  // readLinear(); part of readDisplaySrgb8() only when read after this call.
+  void drawOverlay(std::string_view text);
 
   [[nodiscard]] int widthPx() const;
   [[nodiscard]] int heightPx() const;

@@ -1,6 +1,7 @@
 #include "client/vemview/gl_frame_renderer.h"
 
 #include <chrono>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -53,20 +54,31 @@ class GlFrameRenderer final : public FrameRenderer {
     return frame;
   }
 
+  // The tone-mapped frame, then the overlay, into the window's back buffer, then the swap. The
+  // --screenshot is read from the back buffer between the two: what the window shows without the
+  // overlay, so it can be compared with the headless images.
   void present(const render::ToneParams& tone, const std::string& overlay) override {
     if (!context_->isWindow()) {
       return;
     }
     renderer_->presentToneMapped(tone);
     if (!options_.screenshot.empty()) {
-      lastDisplay_ = renderer_->readDisplaySrgb8();  // the back buffer, before the swap
+      lastDisplay_ = renderer_->readDisplaySrgb8();  // the back buffer, before overlay and swap
     }
-    (void)overlay;
+    renderer_->drawOverlay(overlay);
+    setTitle(overlay.substr(0, overlay.find('\n')));
     context_->swapBuffers();
     context_->pollEvents();
   }
 
   bool open() override { return !context_->shouldClose(); }
+
+  // A drag across the whole window turns the camera half way round; dragging to the right turns
+  // the scene to the right (the camera to its left, azimuth up).
+  float takeOrbitDragRad() override {
+    const glm::dvec2 dragPx = context_->takeLeftDragPx();
+    return float(dragPx.x / double(renderer_->widthPx()) * std::numbers::pi);
+  }
 
  private:
   void saveScreenshot() {
@@ -80,10 +92,18 @@ class GlFrameRenderer final : public FrameRenderer {
     }
   }
 
+  void setTitle(const std::string& title) {
+    if (title != title_) {
+      title_ = title;
+      context_->setTitle("vemview: " + title_);
+    }
+  }
+
   const ViewerOptions& options_;
   std::unique_ptr<gl::GlContext> context_;
   std::unique_ptr<gl::GlRenderer> renderer_;
   std::vector<std::uint8_t> lastDisplay_;
+  std::string title_;
 };
 
 }  // namespace
