@@ -31,11 +31,12 @@ void StatusLine::maybePrint(const RenderPlan& plan) {
   fps_ = double(framesSincePrint_) / seconds;
   framesSincePrint_ = 0;
   lastPrint_ = now;
-  fmt::print(stderr, "vemview: {} | {}\n", line(), plan.describe());
+  shown_ = line();
+  fmt::print(stderr, "vemview: {} | {}\n", shown_, plan.describe());
 }
 
 std::string StatusLine::overlay(const RenderPlan& plan) const {
-  return line() + "\n" + plan.describe();
+  return (shown_.empty() ? line() : shown_) + "\n" + plan.describe();
 }
 
 void StatusLine::printSummary(const RenderPlan& plan, const std::string& lastPicture) const {

@@ -17,6 +17,8 @@ class StatusLine {
  public:
   void add(bool drawn, double renderMs, const render::ShadingLights& lights);
   void maybePrint(const RenderPlan& plan);  // at most once a second
+  // The window's overlay: the line as last printed (it changes once a second, so the overlay is
+  // redrawn once a second), then the plan.
   [[nodiscard]] std::string overlay(const RenderPlan& plan) const;
   void printSummary(const RenderPlan& plan, const std::string& lastPicture) const;
 
@@ -32,6 +34,7 @@ class StatusLine {
   double lastRenderMs_ = 0.0;
   std::size_t lights_ = 0;
   std::size_t shadowed_ = 0;
+  std::string shown_;
 };
 
 }  // namespace vem::view
