@@ -18,9 +18,19 @@ LightSet prefixOf(const LightSet& lights, std::size_t count) {
   prefix.black = lights.black;
   const std::size_t n = std::min(count, lights.lights.size());
   prefix.lights.assign(lights.lights.begin(), lights.lights.begin() + std::ptrdiff_t(n));
-  // Each of the set's lights carries an equal share of its power (core/light_generator.h), so the
-  // n-light set has the same directions with shares size / n times larger.
-  const float scale = n == 0 ? 1.0F : float(double(lights.lights.size()) / double(n));
+  // The prefix carries the whole set's power: for the sampler's equal-power lights that is
+  // size / n (the n-light set has the same directions with shares size / n times larger,
+  // core/light_generator.h); for unequal lights (clusters) the ratio of the luminances.
+  double all = 0.0;
+  double kept = 0.0;
+  for (std::size_t i = 0; i < lights.lights.size(); ++i) {
+    const double y = luminance(lights.lights[i].rgb);
+    all += y;
+    kept += i < n ? y : 0.0;
+  }
+  const float scale = kept > 0.0 ? float(all / kept)
+                      : n == 0   ? 1.0F
+                                 : float(double(lights.lights.size()) / double(n));
   for (Light& light : prefix.lights) {
     light.rgb *= scale;
   }

@@ -3,8 +3,9 @@
 // sections 4 and 5.2).
 //
 // - diffuse: the first lightCount lights of the set (a prefix is a good set: the progressive
-//   property), rescaled by size / lightCount so that they carry the whole power as the
-//   lightCount-light set of the generator does (each light an equal share), or, with clustering,
+//   property), rescaled so that they carry the whole set's power (by size / lightCount for the
+//   generator's equal-power lights: the lightCount-light set; by the luminance ratio for unequal
+//   ones such as clusters), or, with clustering,
 //   their clusters (section 4.3, core/light_clustering.h). These light the diffuse term of every
 //   surface (and the specular term when the scene has no glossy pass). diffuseLists: their
 //   angular-region lists with reach pi/2 (section 4.1), empty when regions are off (every light is

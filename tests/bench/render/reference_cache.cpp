@@ -27,14 +27,17 @@ std::filesystem::path cacheStem(const StudyScene& scene, const StudyMap& map, in
                                 options.targetRelativeError, options.seed);
 }
 
+// The cached reference, unless it is missing, of another size, or stopped short of convergence
+// by a smaller sample cap than `maxSamples`.
 std::optional<StudyReference> loadCached(const std::filesystem::path& stem, int widthPx,
-                                         int heightPx) {
+                                         int heightPx, int maxSamples) {
   std::ifstream facts(stem.string() + ".txt");
   StudyReference out;
   int converged = 0;
   if (!(facts >> out.samplesPerPixel >> out.relativeError >> converged >> out.renderSeconds)) {
     return std::nullopt;
   }
+  if (converged == 0 && out.samplesPerPixel < maxSamples) return std::nullopt;
   auto image = render::loadLinearExr(stem.string() + ".exr");
   if (!image || image->widthPx != widthPx || image->heightPx != heightPx) return std::nullopt;
   out.image = std::move(*image);
@@ -78,7 +81,8 @@ std::expected<StudyReference, std::string> cachedReference(const embree::EmbreeS
                                                            const embree::ReferenceOptions& options,
                                                            const std::filesystem::path& cacheDir) {
   const std::filesystem::path stem = cacheStem(scene, map, widthPx, heightPx, options, cacheDir);
-  if (std::optional<StudyReference> cached = loadCached(stem, widthPx, heightPx)) {
+  if (std::optional<StudyReference> cached =
+          loadCached(stem, widthPx, heightPx, options.maxSamples)) {
     setCoverage(embreeScene, scene.camera, cached->image);
     return std::move(*cached);
   }

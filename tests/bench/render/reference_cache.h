@@ -2,7 +2,8 @@
 // scene under one map, cached in the build folder as linear EXR plus a small text file with the
 // samples and the achieved error, so that reruns skip the expensive part. The cache file is keyed
 // by the map's name and pixels, the image size, the scene (geometry, materials and camera) and
-// the target error; a key mismatch renders again.
+// the target error; a key mismatch renders again, and so does a cached reference that stopped
+// short of the target at a smaller sample cap than the one asked for.
 //
 // EXR holds no coverage, so the coverage of a cached image is recomputed from the primary rays
 // (the same rays as the renderers: scene::OrbitCamera::primaryRay through pixel centres).

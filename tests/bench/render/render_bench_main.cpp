@@ -53,12 +53,15 @@ std::string cpuModel() {
   return "unknown CPU";
 }
 
-std::string machine() {
+double loadAverage() {
   std::ifstream loadavg("/proc/loadavg");
   double load = 0.0;
   loadavg >> load;
-  return fmt::format("{}, {} hardware threads, load average {:.1f} at the start", cpuModel(),
-                     std::thread::hardware_concurrency(), load);
+  return load;
+}
+
+std::string machine() {
+  return fmt::format("{}, {} hardware threads", cpuModel(), std::thread::hardware_concurrency());
 }
 
 // The arguments with the project folder left out of paths, for the report.
@@ -216,6 +219,7 @@ int run(const BenchOptions& o, StudyContext context) {
     if (!study) return fail(study.error());
     studies.push_back(std::move(*study));
   }
+  context.loadAverages = {context.loadAverages.first, loadAverage()};
   context.studySeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return writeOutputs(o, context, sweeps, studies);
@@ -230,6 +234,7 @@ int main(int argc, char** argv) {
   StudyContext context;
   context.command = commandLine(argc, argv);
   context.machine = machine();
+  context.loadAverages = {loadAverage(), 0.0};
   context.widthPx = options.size.widthPx;
   context.heightPx = options.size.heightPx;
   context.referenceTarget = options.referenceError;

@@ -71,46 +71,57 @@ std::string gapSentence(const std::vector<Sweep>& sweeps, const std::vector<MapS
 
 std::string shadowSentence(const std::vector<Sweep>& sweeps, const std::vector<MapStudy>& studies) {
   const auto s0 = configAt(sweeps, "b", "OpenGL", "0");
+  const auto s4 = configAt(sweeps, "b", "OpenGL", "4");
   const auto s64 = configAt(sweeps, "b", "OpenGL", "64");
   const auto s256 = configAt(sweeps, "b", "OpenGL", "256");
   const auto px64 = configAt(sweeps, "c", "OpenGL", "64");
   const auto px1024 = configAt(sweeps, "c", "OpenGL", "1024");
-  if (!s0 || !s64 || !s256 || !px64 || !px1024) return "";
+  if (!s0 || !s4 || !s64 || !s256 || !px64 || !px1024) return "";
+  const double e0 = meanError(studies, *s0);
+  const double e4 = meanError(studies, *s4);
   return fmt::format(
-      " At N = 256, OpenGL without shadows has {} error, with S = 64 shadow maps {} ({} ms more) "
-      "and with S = 256 {} ({} ms more); shadow maps of 64 px give {} and of 1024 px {} at {} "
-      "and {} ms.",
-      percent(meanError(studies, *s0)), percent(meanError(studies, *s64)),
-      milliseconds(meanTimeMs(studies, *s64) - meanTimeMs(studies, *s0)),
+      " At N = 256, OpenGL has {} error without shadows, {} with S = 4 maps, {} with 64 and {} "
+      "with 256 (a map per light, {} ms more than none){}; from 64 to 1024 px maps the error goes "
+      "from {} to {}.",
+      percent(e0), percent(e4), percent(meanError(studies, *s64)),
       percent(meanError(studies, *s256)),
       milliseconds(meanTimeMs(studies, *s256) - meanTimeMs(studies, *s0)),
-      percent(meanError(studies, *px64)), percent(meanError(studies, *px1024)),
-      milliseconds(meanTimeMs(studies, *px64)), milliseconds(meanTimeMs(studies, *px1024)));
+      e4 > e0 ? ": the lights that take the nearest caster's map are shaded worse than with no "
+                "shadow at all"
+              : "",
+      percent(meanError(studies, *px64)), percent(meanError(studies, *px1024)));
 }
 
-// "OpenGL 0.61 (N = 16) to 1.30 (N = 1024), ...": the smallest and largest time ratio of regions
-// on to off, and the largest change of the error.
-std::optional<std::string> regionRatios(const std::vector<Sweep>& sweeps,
-                                        const std::vector<MapStudy>& studies,
-                                        const std::string& renderer) {
+// The time ratio of regions on to off over the sweep: its extremes and where, and the largest
+// change of the error they cause.
+struct RegionEffect {
+  std::pair<double, std::string> fastest;  // (ratio, N)
+  std::pair<double, std::string> slowest;
+  double errorChange = 0.0;
+};
+
+std::optional<RegionEffect> regionEffect(const std::vector<Sweep>& sweeps,
+                                         const std::vector<MapStudy>& studies,
+                                         const std::string& renderer) {
   const SweepSeries* on = findSeries(sweeps, "d", renderer + ", regions on");
   const SweepSeries* off = findSeries(sweeps, "d", renderer + ", regions off");
   if (on == nullptr || off == nullptr || on->points.size() != off->points.size()) {
     return std::nullopt;
   }
   std::vector<std::pair<double, std::string>> ratios;
-  double errorChange = 0.0;
+  RegionEffect out;
   for (std::size_t i = 0; i < on->points.size(); ++i) {
-    errorChange = std::max(errorChange, std::abs(meanError(studies, on->points[i].config) -
-                                                 meanError(studies, off->points[i].config)));
-    ratios.emplace_back(
-        meanTimeMs(studies, on->points[i].config) / meanTimeMs(studies, off->points[i].config),
-        on->points[i].label);
+    const StudyConfig& with = on->points[i].config;
+    const StudyConfig& without = off->points[i].config;
+    out.errorChange =
+        std::max(out.errorChange, std::abs(meanError(studies, with) - meanError(studies, without)));
+    ratios.emplace_back(meanTimeMs(studies, with) / meanTimeMs(studies, without),
+                        on->points[i].label);
   }
   const auto [low, high] = std::ranges::minmax_element(ratios);
-  return fmt::format("{} {:.2f} (N = {}) to {:.2f} (N = {}), its error changing by at most {}",
-                     renderer, low->first, low->second, high->first, high->second,
-                     percent(errorChange));
+  out.fastest = *low;
+  out.slowest = *high;
+  return out;
 }
 
 std::string clusterPart(const std::vector<Sweep>& sweeps, const std::vector<MapStudy>& studies,
@@ -128,16 +139,22 @@ std::string regionClusterSentence(const std::vector<Sweep>& sweeps,
                                   const std::vector<MapStudy>& studies) {
   std::vector<std::string> ratios;
   std::vector<std::string> clusters;
+  double errorChange = 0.0;
   for (const std::string renderer : {"OpenGL", "Embree"}) {
-    if (auto r = regionRatios(sweeps, studies, renderer)) ratios.push_back(*r);
+    if (const auto r = regionEffect(sweeps, studies, renderer)) {
+      ratios.push_back(fmt::format("{:.2f} (N = {}) to {:.2f} (N = {}) for {}", r->fastest.first,
+                                   r->fastest.second, r->slowest.first, r->slowest.second,
+                                   renderer));
+      errorChange = std::max(errorChange, r->errorChange);
+    }
     if (auto c = clusterPart(sweeps, studies, renderer); !c.empty()) clusters.push_back(c);
   }
   std::string out;
   if (!ratios.empty()) {
     out += fmt::format(
-        " Angular regions multiply the frame time by {} over N = 16 ... 1024 (below 1 they save "
-        "time)",
-        fmt::join(ratios, " and "));
+        " Over N = 16 ... 1024, angular regions multiply the frame time by {} (below 1 they save "
+        "time) and change the error by at most {}",
+        fmt::join(ratios, " and by "), percent(errorChange));
   }
   if (!clusters.empty()) {
     out += fmt::format("{}clustering the 1024 lights to Q = 32 takes {}", out.empty() ? " " : "; ",
@@ -185,13 +202,10 @@ std::string benchmarkSection(const StudyContext& context, const std::vector<Swee
       "`cmake --build build --target render-bench`: the default scene at {} x {} under {} real "
       "HDRIs, error against the Embree Monte Carlo reference (relative RMS, geometric mean over "
       "the maps) and median frame time (mean over the maps), S = min(N, 64) shadow maps of "
-      "256 px, regions on. OpenGL: {}. Every sweep, the maps one by one and the plot: "
-      "[{}]({}).\n\n| N |",
-      context.widthPx, context.heightPx, studies.size(),
-      context.glLabel.empty() ? "not measured"
-      : context.glSoftware    ? fmt::format("{}, software renderer, not a GPU", context.glLabel)
-                              : context.glLabel,
-      tableName, tableName);
+      "256 px, regions on. OpenGL: {}. Every sweep (shadowed lights, map resolution, regions, "
+      "clustering), the maps one by one and the plot: [{}]({}).\n\n| N |",
+      context.widthPx, context.heightPx, studies.size(), glDescription(context), tableName,
+      tableName);
   const auto found = std::ranges::find(sweeps, std::string("a"), &Sweep::id);
   if (found == sweeps.end()) return md + "(The light-count sweep was not run.)\n\n";
   const Sweep& a = *found;
@@ -210,7 +224,8 @@ std::string benchmarkSection(const StudyContext& context, const std::vector<Swee
     }
     md += "\n";
   }
-  md += fmt::format("\n{}\n\n", studyFindings(sweeps, studies));
+  md +=
+      fmt::format("\n{}{}\n\n", lightCountSentence(sweeps, studies), gapSentence(sweeps, studies));
   if (!plotName.empty()) md += fmt::format("![accuracy against time]({})\n\n", plotName);
   return md;
 }

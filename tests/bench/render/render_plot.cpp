@@ -15,17 +15,18 @@ struct PlottedSeries {
   const char* series;
   const char* name;    // in the legend
   const char* prefix;  // of the point labels
+  const char* suffix;
 };
 
 constexpr PlottedSeries kPlotted[] = {
-    {"a", "OpenGL", "OpenGL, N lights", "N="},
-    {"a", "Embree", "Embree, N lights", "N="},
-    {"d", "OpenGL, regions off", "OpenGL, N, regions off", "N="},
-    {"d", "Embree, regions off", "Embree, N, regions off", "N="},
-    {"b", "OpenGL", "OpenGL, S maps (N=256)", "S="},
-    {"c", "OpenGL", "OpenGL, map px (N=256)", ""},
-    {"e", "OpenGL, N = 1024", "OpenGL, clusters (N=1024)", "Q="},
-    {"e", "Embree, N = 1024", "Embree, clusters (N=1024)", "Q="},
+    {"a", "OpenGL", "OpenGL, N lights", "N=", ""},
+    {"a", "Embree", "Embree, N lights", "N=", ""},
+    {"d", "OpenGL, regions off", "OpenGL, N, regions off", "N=", ""},
+    {"d", "Embree, regions off", "Embree, N, regions off", "N=", ""},
+    {"b", "OpenGL", "OpenGL, S maps (N=256)", "S=", ""},
+    {"c", "OpenGL", "OpenGL, map px (N=256)", "", "px"},
+    {"e", "OpenGL, N = 1024", "OpenGL, clusters (N=1024)", "Q=", ""},
+    {"e", "Embree, N = 1024", "Embree, clusters (N=1024)", "Q=", ""},
 };
 
 std::vector<PlotSeries> plotSeries(const std::vector<Sweep>& sweeps,
@@ -40,7 +41,8 @@ std::vector<PlotSeries> plotSeries(const std::vector<Sweep>& sweeps,
         for (const SweepPoint& point : series.points) {
           plotted.points.emplace_back(meanTimeMs(studies, point.config),
                                       meanError(studies, point.config));
-          plotted.labels.push_back(wanted.prefix + point.label);
+          plotted.labels.push_back(
+              fmt::format("{}{}{}", wanted.prefix, point.label, wanted.suffix));
         }
         out.push_back(std::move(plotted));
       }

@@ -9,14 +9,12 @@ namespace {
 
 std::string glLine(const StudyContext& c) {
   if (c.glLabel.empty()) return "- OpenGL: not measured (no OpenGL 3.3 context on this machine).\n";
-  const std::string first = c.glRenderer.substr(0, c.glRenderer.find(' '));
-  const std::string kind =
-      c.glSoftware ? fmt::format("**software renderer ({}), not a GPU**", first) : "a GPU";
   return fmt::format(
       "- OpenGL (client/gl, headless EGL): {}; timing label `{}`, `{}`. Median of {} frames "
       "after one warm-up frame, every frame redrawing its shadow maps (as when the lights "
       "change), timed from the render call to the finished image.\n",
-      kind, c.glLabel, c.glRenderer, c.glFrames);
+      c.glSoftware ? fmt::format("**{}**", glDescription(c)) : glDescription(c), c.glLabel,
+      c.glRenderer, c.glFrames);
 }
 
 std::string header(const StudyContext& c) {
@@ -26,9 +24,10 @@ std::string header(const StudyContext& c) {
       "{:.0f} s. Do not edit by hand: rerun the command.\n\n",
       c.command, c.studySeconds);
   md += fmt::format(
-      "- Machine: {}. The cores are shared with other builds, so times drift by tens of per "
-      "cent between runs; compare within a table.\n",
-      c.machine);
+      "- Machine: {}, shared with other work (load average {:.1f} at the start, {:.1f} at the "
+      "end; this study uses two threads): times drift by tens of per cent, even between "
+      "neighbouring rows. Errors do not drift.\n",
+      c.machine, c.loadAverages.first, c.loadAverages.second);
   md += glLine(c);
   md += fmt::format(
       "- Embree (client/embree `renderWithLights`, 2 threads): the same lights and shading, a "
@@ -97,6 +96,13 @@ std::string sweepTable(const Sweep& sweep, const std::vector<MapStudy>& studies)
 }
 
 }  // namespace
+
+std::string glDescription(const StudyContext& c) {
+  if (c.glLabel.empty()) return "not measured";
+  if (!c.glSoftware) return fmt::format("a GPU ({})", c.glLabel);
+  return fmt::format("software renderer ({}), not a GPU",
+                     c.glRenderer.substr(0, c.glRenderer.find(' ')));
+}
 
 std::string describeCharacter(const MapCharacter& c) {
   if (c.topShareOfPower > 0.3) {

@@ -10,6 +10,7 @@
 #include <expected>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/render/study_run.h"
@@ -18,10 +19,11 @@
 namespace vem::bench {
 
 struct StudyContext {
-  std::string command;     // how the study was run
-  std::string machine;     // CPU model and cores
-  std::string glLabel;     // empty without OpenGL
-  std::string glRenderer;  // GL_RENDERER and GL_VERSION
+  std::string command;                     // how the study was run
+  std::string machine;                     // CPU model and cores
+  std::pair<double, double> loadAverages;  // 1-minute load average at the start and the end
+  std::string glLabel;                     // empty without OpenGL
+  std::string glRenderer;                  // GL_RENDERER and GL_VERSION
   bool glSoftware = true;
   std::string sceneDescription;
   int widthPx = 320;
@@ -56,6 +58,9 @@ struct StudyContext {
 
 // What the numbers say about a map's light, e.g. "a small, very bright source (a sun): ...".
 [[nodiscard]] std::string describeCharacter(const MapCharacter& character);
+
+// "software renderer (llvmpipe), not a GPU", the GPU's name, or "not measured".
+[[nodiscard]] std::string glDescription(const StudyContext& context);
 
 // Helpers shared by the report's parts.
 [[nodiscard]] std::string percent(double fraction);  // "4.12 %"
