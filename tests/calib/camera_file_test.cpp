@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kExampleCamera =
-    fs::path(__FILE__).parent_path() / "../../config/camera-example.toml";
+    fs::path(VEM_SOURCE_DIR) / "config/camera-example.toml";
 
 class TempDir {
  public:

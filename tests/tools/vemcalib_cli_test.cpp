@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 using namespace vem::calib;
 
 const fs::path kExampleCamera =
-    fs::path(__FILE__).parent_path() / "../../config/camera-example.toml";
+    fs::path(VEM_SOURCE_DIR) / "config/camera-example.toml";
 
 struct ToolRun {
   int exitCode = -1;
