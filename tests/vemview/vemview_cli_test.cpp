@@ -15,20 +15,13 @@
 #include <nlohmann/json.hpp>
 
 #include "client/render/image_files.h"
+#include "vemview/vemview_process.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ViewRun {
-  int exitCode = -1;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using vem::testing::ViewRun;
 
 std::vector<nlohmann::json> jsonLines(const fs::path& path) {
   std::vector<nlohmann::json> lines;
@@ -39,23 +32,9 @@ std::vector<nlohmann::json> jsonLines(const fs::path& path) {
   return lines;
 }
 
-class VemviewCli : public ::testing::Test {
+class VemviewCli : public vem::testing::VemviewProcessTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("vemview_cli_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  ViewRun run(const std::string& args) const {
-    const fs::path err = dir_ / "stderr";
-    const std::string command = std::string(VEMVIEW_PATH) + " " + args + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), readFile(err)};
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  ViewRun run(const std::string& args) const { return VemviewProcessTest::run("", args); }
   void write(const std::string& name, const std::string& text) const {
     std::ofstream(dir_ / name) << text;
   }
@@ -67,8 +46,6 @@ class VemviewCli : public ::testing::Test {
     EXPECT_TRUE(r.err.starts_with("vemview: error: ")) << r.err;
     EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
   }
-
-  fs::path dir_;
 };
 
 const std::string kSmall = " --headless --width 64 --height 48 --count 16 --shadowed 8 ";

@@ -16,20 +16,13 @@
 #include <gtest/gtest.h>
 
 #include "client/render/image_files.h"
+#include "vemview/vemview_process.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ViewRun {
-  int exitCode = -1;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using vem::testing::ViewRun;
 
 bool xvfbRunInstalled() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
@@ -38,23 +31,8 @@ constexpr const char* kTimeout = "timeout 60 ";
 const std::string kScene =
     " --width 160 --height 120 --frames 3 --scene spheres --count 32 --shadowed 8 ";
 
-class VemviewWindow : public ::testing::Test {
+class VemviewWindow : public vem::testing::VemviewProcessTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("vemview_window_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  ViewRun run(const std::string& prefix, const std::string& args) const {
-    const fs::path err = dir_ / "stderr";
-    const std::string command =
-        prefix + std::string(VEMVIEW_PATH) + " " + args + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile(err)};
-  }
   // xvfb-run -a picks the first free display number; two runs starting at once can pick the same
   // one, and the loser's Xvfb fails to start: try again then.
   ViewRun runUnderXvfb(const std::string& args) const {
@@ -66,9 +44,6 @@ class VemviewWindow : public ::testing::Test {
     }
     return r;
   }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  fs::path dir_;
 };
 
 // The last PNG a headless --out run wrote (frames not redrawn write none).
