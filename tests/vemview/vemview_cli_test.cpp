@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -151,6 +152,43 @@ TEST_F(VemviewCli, AdaptiveCountHalvesTowardAnUnreachableTargetDownToItsFloor) {
   for (std::size_t i = 1; i < lines.size(); ++i) {
     EXPECT_EQ(lines[i]["lights"].get<int>(), std::max(4, 256 >> i)) << "frame " << i;
   }
+}
+
+TEST_F(VemviewCli, BlackLightFrameRendersBlackWithoutNaN) {
+  write("black.jsonl",
+        R"({"lights":[{"id":0,"dir":[0,1,0],"rgb":[0,0,0]},{"id":1,"dir":[1,0,0],"rgb":[0,0,0]}]})"
+        "\n");
+  const ViewRun r = run(kSmall + "--scene spheres --lights " + path("black.jsonl") + " --out " +
+                        path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto exr = vem::render::loadLinearExr(dir_ / "out" / "frame-000000.exr");
+  ASSERT_TRUE(exr.has_value()) << exr.error();
+  for (float v : exr->rgb) {
+    ASSERT_EQ(v, 0.0F);
+  }
+  const auto png = vem::render::loadSrgb8(dir_ / "out" / "frame-000000.png");
+  ASSERT_TRUE(png.has_value()) << png.error();
+  EXPECT_EQ(*std::ranges::max_element(png->rgb), 0);
+}
+
+TEST_F(VemviewCli, SunAtTenToTheFiveTimesTheSkyRendersFiniteNonNegativeRadiance) {
+  std::string lights = R"({"lights":[{"id":0,"dir":[0.6,0.8,0],"rgb":[1e5,1e5,1e5]})";
+  for (int i = 1; i < 16; ++i) {
+    const double a = 0.4 * i;
+    lights += ",{\"id\":" + std::to_string(i) + ",\"dir\":[" + std::to_string(0.6 * std::cos(a)) +
+              "," + std::to_string(0.8) + "," + std::to_string(0.6 * std::sin(a)) +
+              "],\"rgb\":[1,1,1]}";
+  }
+  write("sun.jsonl", lights + "]}\n");
+  const ViewRun r = run(kSmall + "--scene spheres --lights " + path("sun.jsonl") + " --out " +
+                        path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto exr = vem::render::loadLinearExr(dir_ / "out" / "frame-000000.exr");
+  ASSERT_TRUE(exr.has_value()) << exr.error();
+  for (float v : exr->rgb) {
+    ASSERT_TRUE(std::isfinite(v) && v >= 0.0F);
+  }
+  EXPECT_GT(*std::ranges::max_element(exr->rgb), 1e3F);  // the sunlit side
 }
 
 TEST_F(VemviewCli, MissingSceneFileIsOneSentenceNamingIt) {
