@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <thread>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -23,6 +24,7 @@ namespace vem::view {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr auto kIdleWait = std::chrono::milliseconds(15);
 
 double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -144,6 +146,9 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
     }
   }
   v.status.maybePrint(v.plan);
+  if (!decision.redraw && !v.options.headless) {
+    std::this_thread::sleep_for(kIdleWait);  // nothing changed: do not spin the window loop
+  }
   return v.renderer->open();
 }
 
