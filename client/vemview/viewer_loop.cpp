@@ -92,13 +92,19 @@ struct Viewer {
 // One frame: returns false when the run must stop (window closed), an error for a failure.
 std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   const auto frameStart = Clock::now();
-  const auto wait =
-      std::chrono::milliseconds(v.lastDrawn ? 5 : int(v.options.streamTimeoutSec * 1000));
+  // Headless from a live stream, each frame is a new light frame (waiting up to --timeout); a
+  // window polls, so that it stays responsive between light frames.
+  const bool waitForNew = !v.lastDrawn || (v.options.headless && v.input->facts().live);
+  const auto wait = waitForNew ? std::chrono::milliseconds(int(v.options.streamTimeoutSec * 1000))
+                               : std::chrono::milliseconds(5);
   std::optional<InputFrame> frame = v.input->next(wait);
-  if (!frame) {
+  const bool stale = frame && waitForNew && v.lastDrawn && v.input->facts().live &&
+                     frame->seq == v.lastDrawn->inputSeq;
+  if (!frame || stale) {
     const std::string why = v.input->failure();
-    return std::unexpected(why.empty() ? fmt::format("{}: no lights arrived within {} s",
+    return std::unexpected(why.empty() ? fmt::format("{}: no {}lights arrived within {} s",
                                                      v.input->facts().description,
+                                                     stale ? "new " : "",
                                                      v.options.streamTimeoutSec)
                                        : why);
   }

@@ -74,12 +74,12 @@ TEST_F(VemviewStream, EachNewLightFrameFromVemdIsDrawnWithItsShadowMapsRedrawn) 
   for (std::string line; std::getline(timing, line); ++lines) {
     const auto json = nlohmann::json::parse(line);
     seqs.insert(json["input_seq"].get<std::uint64_t>());
-    if (json["drawn"].get<bool>()) {
-      EXPECT_EQ(json["lights"].get<int>(), 32);
-    }
+    EXPECT_TRUE(json["drawn"].get<bool>());
+    EXPECT_EQ(json["lights"].get<int>(), 32);
+    EXPECT_EQ(json["shadow_maps_rendered"].get<int>(), 8);  // new lights, new shadow maps
   }
   EXPECT_EQ(lines, 4);
-  EXPECT_GE(seqs.size(), 2U) << "the stream's lights never changed";
+  EXPECT_EQ(seqs.size(), 4U) << "headless from a stream, every frame is a new light frame";
 }
 
 TEST_F(VemviewStream, GlossySceneSubscribesToTheCubeMaps) {
