@@ -219,13 +219,23 @@ TEST(AravisSource, SizeOffTheCamerasIncrementIsRefusedWithASentence) {
 TEST(AravisSource, InterruptWakesANextThatWaitsForASlowCamera) {
   auto fake = FakeGvCamera::start("VEM10", writeFakeGenicam({"Mono8"}));
   ASSERT_TRUE(fake);
-  // One frame every 5 s: even a slow (sanitizer) build opens and starts the camera well within a
-  // period, so no second frame is waiting in the pool after the first.
+  // One frame every 5 s. Aravis's fake camera sends at whole multiples of its period on
+  // CLOCK_MONOTONIC (steady_clock here), not a period after the start: the first frame may come at
+  // once and the second any time within the next 5 s. So take frames until one came at a
+  // boundary with more than 2 s of the period left; then the next frame is far away.
+  constexpr auto kPeriod = std::chrono::seconds(5);
   cameras::CameraSettings settings = fakeSettings("Mono8", 64, 64, 0.2);
   settings.timeoutMs = 12'000;
   auto source = AravisSource::open(kFakeAddress, settings);
   ASSERT_TRUE(source) << source.error().message;
-  ASSERT_TRUE((*source)->next());  // then the next frame is 5 s away
+  ASSERT_TRUE((*source)->next());
+  const auto untilNextFrame = [&] {
+    return kPeriod - std::chrono::steady_clock::now().time_since_epoch() % kPeriod;
+  };
+  if (untilNextFrame() < std::chrono::seconds(2)) {
+    ASSERT_TRUE((*source)->next());
+  }
+  ASSERT_GT(untilNextFrame(), std::chrono::seconds(2));
   std::thread interrupter([&] {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     (*source)->interrupt();
