@@ -56,7 +56,11 @@ struct Outbox {
   std::deque<std::string> messages;
   asio::steady_timer wake;
   bool open = true;
+  bool closing = false;  // stop(): the write loop sends a close frame (1000) after its current write
 };
+
+// How long stop() waits for the daemon to answer the close frame before it drops the socket.
+constexpr std::chrono::milliseconds kClosingHandshakeLimit{1000};
 
 // How one connection ended.
 struct SessionEnd {
@@ -140,6 +144,7 @@ struct StreamClient::Impl {
   std::string lastLoggedReason;
   bool stopping = false;                // stop() asked: every coroutine winds down
   std::function<void()> cancelSession;  // aborts the current connection's operations
+  std::unique_ptr<asio::steady_timer> closingLimit;  // stop()'s deadline for the closing handshake
   asio::steady_timer* backoffTimer = nullptr;
   bool stopped = false;  // under `mutex`; set once by stop()
 
@@ -279,6 +284,13 @@ struct StreamClient::Impl {
   template <class Ws>
   static awaitable<void> writeLoop(std::shared_ptr<Ws> ws, std::shared_ptr<Outbox> box) {
     while (box->open) {
+      if (box->closing) {
+        // The read loop then ends with the daemon's answering close frame.
+        boost::system::error_code ec;
+        co_await ws->async_close(websocket::close_code::normal,
+                                 asio::redirect_error(use_awaitable, ec));
+        co_return;
+      }
       if (box->messages.empty()) {
         boost::system::error_code ec;
         co_await box->wake.async_wait(asio::redirect_error(use_awaitable, ec));
@@ -382,6 +394,7 @@ struct StreamClient::Impl {
       outbox->wake.cancel();
       outbox.reset();
     }
+    if (closingLimit) closingLimit->cancel();
     if (refusal) {
       end.reason = refusal->reason;
       end.fatal = refusal->fatal;
@@ -475,15 +488,27 @@ void StreamClient::stop() {
   }
   // The coroutines wind down on their own (destroying suspended ones with the I/O context is not
   // safe in Boost 1.74's Asio): cancel what they wait on, then let the context run dry.
+  // A connected session ends with a closing handshake (bounded by kClosingHandshakeLimit), so the
+  // daemon sees a client that left, not a lost connection; anything else is cancelled at once.
   asio::post(*i.io, [&i] {
     i.stopping = true;
-    if (i.cancelSession) i.cancelSession();
     if (i.backoffTimer != nullptr) i.backoffTimer->cancel();
+    if (!i.outbox) {
+      if (i.cancelSession) i.cancelSession();
+      return;
+    }
+    i.outbox->closing = true;
+    i.outbox->wake.cancel();
+    i.closingLimit = std::make_unique<asio::steady_timer>(*i.io, kClosingHandshakeLimit);
+    i.closingLimit->async_wait([&i](boost::system::error_code ec) {
+      if (!ec && i.cancelSession) i.cancelSession();
+    });
   });
   i.work.reset();
   if (i.thread.joinable()) i.thread.join();
   i.failPendingControls("the client stopped before the daemon replied");
   i.outbox.reset();
+  i.closingLimit.reset();
   i.io.reset();
   {
     std::lock_guard lock(i.mutex);

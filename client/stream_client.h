@@ -97,7 +97,9 @@ class StreamClient {
   StreamClient(const StreamClient&) = delete;
   StreamClient& operator=(const StreamClient&) = delete;
 
-  // Closes the connection and joins the I/O thread; pending controls fail. Idempotent.
+  // Closes the connection with a WebSocket closing handshake (code 1000; the socket is dropped if
+  // the daemon does not answer within 1 s) and joins the I/O thread; pending controls fail.
+  // Idempotent.
   void stop();
 
   [[nodiscard]] ConnectionState state() const;

@@ -164,6 +164,28 @@ TEST(StreamClient, ReconnectsAfterAMalformedMessage) {
   EXPECT_EQ(client->stats().received, 1U);
 }
 
+TEST(StreamClient, StopEndsTheConnectionWithAClosingHandshakeNotADroppedSocket) {
+  TestStreamServer server;
+  auto client = startClient(server.url());
+  waitSubscribed(server);
+  ASSERT_TRUE(client->waitForState(ConnectionState::Connected, kWait));
+  client->stop();
+  ASSERT_TRUE(server.waitForEndings(1, kWait));
+  EXPECT_EQ(server.endings(), std::vector<std::string>{"close 1000"});
+  EXPECT_EQ(client->state(), ConnectionState::Stopped);
+}
+
+TEST(StreamClient, MalformedMessageClosesWithProtocolError1002) {
+  TestStreamServer server;
+  auto client = startClient(server.url());
+  waitSubscribed(server);
+  stream::ServerMessage bad = lightFrameMessage(1);
+  bad.mutable_lights()->set_dirs(0, 7.0F);
+  server.send(bytesOf(bad));
+  ASSERT_TRUE(server.waitForEndings(1, kWait));
+  EXPECT_EQ(server.endings().at(0), "close 1002");
+}
+
 TEST(StreamClient, RefusesToSendControlWithoutAToken) {
   TestStreamServer server;
   auto client = startClient(server.url());

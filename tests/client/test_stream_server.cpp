@@ -76,6 +76,7 @@ struct TestStreamServer::State {
   std::size_t connectionCount = 0;
   std::vector<std::string> authorizations;
   std::vector<stream::ClientMessage> clientMessages;
+  std::vector<std::string> endings;
   std::vector<std::weak_ptr<Connection>> connections;  // I/O thread only
 
   void record(auto update) {
@@ -92,7 +93,13 @@ struct TestStreamServer::State {
       buffer.clear();
       boost::system::error_code ec;
       co_await c->ws.async_read(buffer, asio::redirect_error(use_awaitable, ec));
-      if (ec) break;
+      if (ec) {
+        const std::string ending = ec == websocket::error::closed
+                                       ? "close " + std::to_string(c->ws.reason().code)
+                                       : "dropped (" + ec.message() + ")";
+        record([&] { endings.push_back(ending); });
+        break;
+      }
       stream::ClientMessage message;
       const auto data = buffer.cdata();
       if (!message.ParseFromArray(data.data(), int(data.size()))) continue;
@@ -199,6 +206,16 @@ bool TestStreamServer::waitForClientMessages(std::size_t count,
   std::unique_lock lock(state_->mutex);
   return state_->changed.wait_for(lock, timeout,
                                   [&] { return state_->clientMessages.size() >= count; });
+}
+
+bool TestStreamServer::waitForEndings(std::size_t count, std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(state_->mutex);
+  return state_->changed.wait_for(lock, timeout, [&] { return state_->endings.size() >= count; });
+}
+
+std::vector<std::string> TestStreamServer::endings() const {
+  std::lock_guard lock(state_->mutex);
+  return state_->endings;
 }
 
 std::vector<std::string> TestStreamServer::authorizations() const {

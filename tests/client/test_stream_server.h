@@ -2,8 +2,8 @@
 // server is daemon/stream/). It listens on 127.0.0.1 (an ephemeral port, or a given one to stand
 // for a restarted daemon), checks `Authorization: Bearer TOKEN` when given a token (401 otherwise),
 // greets each connection with a Hello (or any bytes set with setGreeting), sends what the test
-// passes to send(), records the handshakes' Authorization headers and the client messages, and
-// answers each Control with an ok ControlReply. Its own I/O thread; members are thread-safe.
+// passes to send(), records the handshakes' Authorization headers, the client messages and how
+// each connection ended, and answers each Control with an ok ControlReply. Its own I/O thread; members are thread-safe.
 #pragma once
 
 #include <chrono>
@@ -34,7 +34,11 @@ class TestStreamServer {
   [[nodiscard]] bool waitForConnections(std::size_t count, std::chrono::milliseconds timeout) const;
   [[nodiscard]] bool waitForClientMessages(std::size_t count,
                                            std::chrono::milliseconds timeout) const;
+  [[nodiscard]] bool waitForEndings(std::size_t count, std::chrono::milliseconds timeout) const;
   [[nodiscard]] std::vector<std::string> authorizations() const;
+  // How each accepted WebSocket connection ended, in order: "close CODE" after a closing
+  // handshake the client began, "dropped (WHY)" when the connection just broke.
+  [[nodiscard]] std::vector<std::string> endings() const;
   [[nodiscard]] std::vector<stream::ClientMessage> clientMessages() const;
 
  private:
