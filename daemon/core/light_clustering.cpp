@@ -140,7 +140,9 @@ Clustering clusterLights(const LightSet& lights, const ClusteringParams& params)
 
 Clustering clusterLightsWithinRadius(const LightSet& lights, double radiusRad) {
   assert(radiusRad >= 0.0 && radiusRad <= std::numbers::pi);
-  return GreedyClustering(lights, radiusRad).run();
+  Clustering out = GreedyClustering(lights, radiusRad).run();
+  out.radiusRad = radiusRad;
+  return out;
 }
 
 }  // namespace vem

@@ -40,6 +40,7 @@ struct ClusteringParams {
 struct Clustering {
   LightSet clusters;
   std::vector<std::uint32_t> clusterOfLight;  // one entry per input light
+  double radiusRad = 0.0;  // the radius e the clusters were made with, in [0, pi]
 };
 
 // The angular radius e of the clusters, in [0, pi].

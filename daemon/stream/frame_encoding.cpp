@@ -26,8 +26,8 @@ void addVec3(google::protobuf::RepeatedField<float>& out, glm::vec3 v) {
   out.Add(v.z);
 }
 
-void fillClusters(Clusters& out, const Clustering& clustering, double radiusRad) {
-  out.set_radius_rad(radiusRad);
+void fillClusters(Clusters& out, const Clustering& clustering) {
+  out.set_radius_rad(clustering.radiusRad);
   const std::vector<Light>& clusters = clustering.clusters.lights;
   out.mutable_dirs()->Reserve(int(3 * clusters.size()));
   out.mutable_rgb()->Reserve(int(3 * clusters.size()));
@@ -116,7 +116,7 @@ ServerMessage lightFrameMessage(const vemd::ProcessedFrame& frame, const LightFr
     addVec3(*out.mutable_rgb(), light.rgb);
   }
   if (published.clustering != nullptr) {
-    fillClusters(*out.mutable_clusters(), *published.clustering, stamp.clusterRadiusRad);
+    fillClusters(*out.mutable_clusters(), *published.clustering);
   }
   return message;
 }

@@ -26,7 +26,6 @@ struct LightFrameStamp {
   std::int64_t publishUnixNs = 0;  // when processing finished
   SourceState status = SOURCE_STATE_OK;
   double filterDelayFrames = 0.0;  // the temporal filter's delay (0 without a filter)
-  double clusterRadiusRad = 0.0;   // the clustering radius e, sent when the frame is clustered
 };
 
 // A ServerMessage holding a LightFrame (protocol version not yet set: see serialize).

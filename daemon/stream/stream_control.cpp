@@ -6,7 +6,6 @@
 #include <spdlog/spdlog.h>
 
 #include "core/fir_design.h"
-#include "core/light_clustering.h"
 #include "vemd/frame_source.h"
 
 namespace vem::stream {
@@ -29,11 +28,6 @@ SourceState sourceState(const vemd::LoopCounters& counters, std::int64_t nowNs) 
   const bool stalled =
       counters.lastProcessedNs == 0 || nowNs - counters.lastProcessedNs > kStalledAfterNs;
   return stalled ? SOURCE_STATE_TIMEOUT : SOURCE_STATE_OK;
-}
-
-double clusterRadius(const vemd::ProcessingOptions& o) {
-  if (!o.clustering) return 0.0;
-  return clusterRadiusRad({o.clusterBudget, o.clusterCorrectionFactor, MapLayout::Hemisphere});
 }
 
 }  // namespace
@@ -60,7 +54,7 @@ void StreamControl::betweenFrames(vemd::Pipeline& pipeline, const vemd::LoopCoun
       spdlog::error("stream: the recording started by a client stopped: {}", *failure);
     }
   }
-  sink_.setStamp({pipeline.filterDelayFrames(), clusterRadius(pipeline.options())});
+  sink_.setStamp({pipeline.filterDelayFrames()});
   const std::int64_t nowNs = vemd::monotonicNowNs();
   if (nowNs >= nextStatusNs_) {
     publishStatus(pipeline, counters, nowNs);

@@ -35,7 +35,6 @@ std::expected<void, vemd::SinkFailure> StreamSink::consume(const vemd::Processed
   stamp.publishUnixNs = nowUnixNs;
   stamp.status = SOURCE_STATE_OK;
   stamp.filterDelayFrames = stamp_.filterDelayFrames;
-  stamp.clusterRadiusRad = stamp_.clusterRadiusRad;
   server_.publishLights(shared(lightFrameMessage(frame, stamp)));
   ++framesPublished_;
   ++windowFrames_;

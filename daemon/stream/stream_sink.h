@@ -31,7 +31,6 @@ struct StreamSinkOptions {
 // What the sink needs from the pipeline, refreshed between frames (stream_control.h).
 struct ProcessingStamp {
   double filterDelayFrames = 0.0;
-  double clusterRadiusRad = 0.0;  // 0: clustering off
 };
 
 // Frames and latency since the last takeWindow().

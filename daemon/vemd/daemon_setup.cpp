@@ -56,7 +56,7 @@ LoopOptions loopOptions(const VemdConfig& config) {
   return loop;
 }
 
-SinkConfig sinkConfig(const OutputConfig& output, const ProcessingOptions& processing) {
+SinkConfig sinkConfig(const OutputConfig& output) {
   SinkConfig sinks;
   if (!output.jsonl.empty()) sinks.jsonl = under(output.dir, output.jsonl);
   if (!output.record.empty()) sinks.record = under(output.dir, output.record);
@@ -67,10 +67,6 @@ SinkConfig sinkConfig(const OutputConfig& output, const ProcessingOptions& proce
   sinks.previewNumbered = output.previewNumbered;
   sinks.previewScale = int(output.previewScale);
   sinks.recordSyncEveryFrames = std::uint32_t(output.recordSyncEvery);
-  if (processing.clustering) {
-    sinks.clusterRadiusRad = clusterRadiusRad(
-        {processing.clusterBudget, processing.clusterCorrectionFactor, MapLayout::Hemisphere});
-  }
   return sinks;
 }
 
@@ -104,7 +100,7 @@ std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config,
 
   if (auto problem = outputFolderProblem(config.output.dir)) return std::unexpected(*problem);
   auto sinks =
-      makeSinks(sinkConfig(config.output, config.processing), recordingContext(description));
+      makeSinks(sinkConfig(config.output), recordingContext(description));
   if (!sinks) return std::unexpected(sinks.error());
   if (extraSinks) {
     if (auto added = extraSinks(description, *sinks); !added) {

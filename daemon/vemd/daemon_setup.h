@@ -38,8 +38,7 @@ using ExtraSinks = std::function<std::expected<void, std::string>(
 
 // The pieces, for tests.
 [[nodiscard]] LoopOptions loopOptions(const VemdConfig& config);
-[[nodiscard]] SinkConfig sinkConfig(const OutputConfig& output,
-                                    const ProcessingOptions& processing);
+[[nodiscard]] SinkConfig sinkConfig(const OutputConfig& output);
 [[nodiscard]] RecordingContext recordingContext(const SourceDescription& source);
 
 }  // namespace vem::vemd

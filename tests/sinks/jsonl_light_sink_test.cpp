@@ -33,7 +33,7 @@ void expectSameLights(const nlohmann::json& line, const LightSet& set) {
 
 TEST_F(JsonlLightSinkTest, LinesParseBackWithSeqTimestampAndBitExactFloats) {
   const fs::path path = dir_ / "lights.jsonl";
-  auto sink = JsonlLightSink::open(path, std::nullopt);
+  auto sink = JsonlLightSink::open(path);
   ASSERT_TRUE(sink) << sink.error().message;
   for (int i = 0; i < 4; ++i) {
     TestFrame frame(i);
@@ -54,7 +54,7 @@ TEST_F(JsonlLightSinkTest, LinesParseBackWithSeqTimestampAndBitExactFloats) {
 
 TEST_F(JsonlLightSinkTest, LineKeepsVemtoolsKeysInVemtoolsOrder) {
   TestFrame frame(0);
-  const nlohmann::ordered_json line = vemd::lightsLineJson(frame.processed, 7, std::nullopt);
+  const nlohmann::ordered_json line = vemd::lightsLineJson(frame.processed, 7);
   std::vector<std::string> keys;
   for (const auto& [key, value] : line.items()) keys.push_back(key);
   EXPECT_EQ(keys, (std::vector<std::string>{"frame", "seq", "capture_ts_ns", "filtered", "count",
@@ -68,7 +68,7 @@ TEST_F(JsonlLightSinkTest, FilteredLightsArePublishedWhenPresentElseTheFramesOwn
   frame.processed.filtered = oddLights(9, 3);
   frame.processed.filteredSeq = kFirstSeq - 5;
   const nlohmann::json filtered =
-      nlohmann::json::parse(vemd::lightsLineJson(frame.processed, 0, std::nullopt).dump());
+      nlohmann::json::parse(vemd::lightsLineJson(frame.processed, 0).dump());
   EXPECT_TRUE(filtered.at("filtered").get<bool>());
   EXPECT_EQ(filtered.at("filtered_seq").get<std::uint64_t>(), kFirstSeq - 5);
   EXPECT_EQ(filtered.at("seq").get<std::uint64_t>(), kFirstSeq + 2);
@@ -76,7 +76,7 @@ TEST_F(JsonlLightSinkTest, FilteredLightsArePublishedWhenPresentElseTheFramesOwn
 
   frame.processed.filtered.reset();
   const nlohmann::json raw =
-      nlohmann::json::parse(vemd::lightsLineJson(frame.processed, 0, std::nullopt).dump());
+      nlohmann::json::parse(vemd::lightsLineJson(frame.processed, 0).dump());
   EXPECT_FALSE(raw.at("filtered").get<bool>());
   EXPECT_FALSE(raw.contains("filtered_seq"));
   expectSameLights(raw, oddLights(2));
@@ -90,18 +90,31 @@ TEST_F(JsonlLightSinkTest, ClusteredLineIsWhatVemtoolLightsClusterWrites) {
   params.clusterBudget = 6;
   frame.processed.clustering = clusterLights(frame.processed.lights, params);
   ASSERT_LT(frame.processed.clustering->clusters.lights.size(), 40U);
-  const double radius = clusterRadiusRad(params);
-  const nlohmann::ordered_json line = vemd::lightsLineJson(frame.processed, 3, radius);
+  const nlohmann::ordered_json line = vemd::lightsLineJson(frame.processed, 3);
   const nlohmann::ordered_json vemtool =
       tool::clusteredFrameJson(frame.processed.lights, 6, MapLayout::Hemisphere, 3);
   EXPECT_EQ(line["lights"], vemtool["lights"]);
   EXPECT_EQ(line["count"], vemtool["count"]);
   EXPECT_EQ(line["clustered_from"], 40);
   EXPECT_EQ(line["radius_rad"], vemtool["radius_rad"]);
+  EXPECT_DOUBLE_EQ(line["radius_rad"].get<double>(), clusterRadiusRad(params));
+}
 
-  const nlohmann::ordered_json noRadius = vemd::lightsLineJson(frame.processed, 3, std::nullopt);
-  EXPECT_FALSE(noRadius.contains("radius_rad"));
-  EXPECT_EQ(noRadius["lights"], vemtool["lights"]);
+// The radius used to be fixed when vemd started, so a cluster budget changed by a client's control
+// message left every later line with the old radius.
+TEST_F(JsonlLightSinkTest, RadiusIsTheOneEachFrameWasClusteredWith) {
+  TestFrame frame(1);
+  frame.processed.lights = oddLights(1, 40);
+  double lastRadius = -1.0;
+  for (const int budget : {6, 40}) {
+    vem::ClusteringParams params;
+    params.clusterBudget = budget;
+    frame.processed.clustering = clusterLights(frame.processed.lights, params);
+    const nlohmann::ordered_json line = vemd::lightsLineJson(frame.processed, 0);
+    EXPECT_DOUBLE_EQ(line["radius_rad"].get<double>(), clusterRadiusRad(params)) << budget;
+    EXPECT_NE(line["radius_rad"].get<double>(), lastRadius);
+    lastRadius = line["radius_rad"].get<double>();
+  }
 }
 
 TEST_F(JsonlLightSinkTest, ClusteringOfAnotherSetIsNotAttributedToTheseLights) {
@@ -109,14 +122,14 @@ TEST_F(JsonlLightSinkTest, ClusteringOfAnotherSetIsNotAttributedToTheseLights) {
   vem::ClusteringParams params;
   params.clusterBudget = 2;
   frame.processed.clustering = clusterLights(oddLights(1, 12), params);  // 12 lights, not 5
-  const nlohmann::ordered_json line = vemd::lightsLineJson(frame.processed, 0, 0.5);
+  const nlohmann::ordered_json line = vemd::lightsLineJson(frame.processed, 0);
   EXPECT_FALSE(line.contains("clustered_from"));
   EXPECT_EQ(line["count"], 5);
 }
 
 TEST_F(JsonlLightSinkTest, EachLineIsInTheFileWhenConsumeReturns) {
   const fs::path path = dir_ / "lights.jsonl";
-  auto sink = JsonlLightSink::open(path, std::nullopt);
+  auto sink = JsonlLightSink::open(path);
   ASSERT_TRUE(sink);
   for (int i = 0; i < 3; ++i) {
     TestFrame frame(i);
@@ -131,7 +144,7 @@ TEST_F(JsonlLightSinkTest, EachLineIsInTheFileWhenConsumeReturns) {
 TEST_F(JsonlLightSinkTest, RestartAppendsToTheFileInsteadOfTruncatingIt) {
   const fs::path path = dir_ / "lights.jsonl";
   for (int run = 0; run < 2; ++run) {
-    auto sink = JsonlLightSink::open(path, std::nullopt);
+    auto sink = JsonlLightSink::open(path);
     ASSERT_TRUE(sink);
     TestFrame frame(run);
     ASSERT_TRUE(sink->consume(frame.processed));
@@ -144,7 +157,7 @@ TEST_F(JsonlLightSinkTest, RestartAppendsToTheFileInsteadOfTruncatingIt) {
 
 TEST_F(JsonlLightSinkTest, FolderThatDoesNotExistFailsAtOpenWithOneSentence) {
   const fs::path path = dir_ / "missing" / "lights.jsonl";
-  auto sink = JsonlLightSink::open(path, std::nullopt);
+  auto sink = JsonlLightSink::open(path);
   ASSERT_FALSE(sink);
   EXPECT_EQ(sink.error().message,
             "jsonl: cannot open " + path.string() + " for appending (No such file or directory)");
@@ -152,7 +165,7 @@ TEST_F(JsonlLightSinkTest, FolderThatDoesNotExistFailsAtOpenWithOneSentence) {
 
 // /dev/full accepts open() and fails every write() with ENOSPC.
 TEST_F(JsonlLightSinkTest, WriteErrorIsReportedOnceThenTheSinkIsQuiet) {
-  auto sink = JsonlLightSink::open("/dev/full", std::nullopt);
+  auto sink = JsonlLightSink::open("/dev/full");
   ASSERT_TRUE(sink) << sink.error().message;
   TestFrame frame(0);
   auto first = sink->consume(frame.processed);

@@ -61,9 +61,7 @@ Blob greenBlob(const cv::Mat& image, cv::Rect window) {
   return blob;
 }
 
-vemd::PreviewStyle style(std::optional<double> radiusRad = std::nullopt) {
-  return {.scale = kScale, .clusterRadiusRad = radiusRad};
-}
+vemd::PreviewStyle style() { return {.scale = kScale}; }
 
 TEST_F(PreviewSinkTest, PngDecodesWithTheMapSizeTimesTheScale) {
   auto sink = PreviewSink::create(dir_ / "out", {.every = 1, .numbered = false, .style = style()});
@@ -121,10 +119,11 @@ TEST_F(PreviewSinkTest, ClustersAreRingsOfTheClusteringRadius) {
   Clustering clustering;
   clustering.clusters = lightsAt({{centre, 2.0F}});
   clustering.clusterOfLight = {0, 0};
+  clustering.radiusRad = 0.4;
   const LightSet lights = lightsAt({{centre, 1.0F}, {unitDirection(47 * kDeg, 181 * kDeg), 1.0F}});
-  const double radiusRad = 0.4;
+  const double radiusRad = clustering.radiusRad;
   const double radiusPx = radiusRad / (std::numbers::pi / 2) * kH * kScale;  // 30.6
-  const cv::Mat image = vemd::previewImage(greyMap(), lights, &clustering, style(radiusRad));
+  const cv::Mat image = vemd::previewImage(greyMap(), lights, &clustering, style());
   // Up the column through the centre (x = 239.5 continuous -> column 239 or 240), the most
   // orange pixel lies on the ring.
   int bestRow = -1;

@@ -9,12 +9,15 @@
 #include <gtest/gtest.h>
 #include <spdlog/spdlog.h>
 
+#include "core/light_clustering.h"
 #include "recording/recording_reader.h"
+#include "stream/frame_encoding.h"
 #include "stream/recording_switch.h"
 #include "stream/stream_control.h"
 #include "stream/stream_server.h"
 #include "stream/stream_sink.h"
 #include "vemd/daemon_setup.h"
+#include "vemd/sinks/jsonl_light_sink.h"
 #include "vemd/vemd_fixtures.h"
 #include "ws_test_client.h"
 
@@ -180,6 +183,30 @@ TEST_F(StreamProcessing, ControlChangesThePipelineBetweenFramesAndAnswers) {
   record.mutable_start_recording();
   reply = controlRoundTrip(*server_, control, *pipeline_, client, record);
   EXPECT_FALSE(reply.ok());  // no recording switch here
+}
+
+// The clustering radius used to be fixed when vemd started: after a client changed the cluster
+// budget, the JSON-lines file and the stream kept sending the old radius with the new clusters.
+TEST_F(StreamProcessing, ClusterBudgetSetByControlChangesTheRadiusInTheJsonLinesAndTheStream) {
+  StreamControl control(*server_, *sink_, nullptr, {"test", "id"}, 1'000'000'000'000);
+  WsTestClient client;
+  ASSERT_EQ(client.connect(server_->boundPort(), "/", "secret"), 0);
+  for (const std::uint32_t budget : {4U, 48U}) {
+    Control cluster;
+    cluster.set_set_cluster_budget(budget);
+    ASSERT_TRUE(controlRoundTrip(*server_, control, *pipeline_, client, cluster).ok());
+    captured_.frame = vem::testing::cachedSkyFrame(int(budget));
+    captured_.seq = budget;
+    const vemd::ProcessedFrame& processed = pipeline_->process(captured_);
+    ASSERT_TRUE(processed.clustering.has_value());
+    const double expected = clusterRadiusRad(
+        {int(budget), pipeline_->options().clusterCorrectionFactor, MapLayout::Hemisphere});
+    EXPECT_DOUBLE_EQ(vemd::lightsLineJson(processed, 0).at("radius_rad").get<double>(), expected)
+        << "budget " << budget;
+    const LightFrame sent = lightFrameMessage(processed, {}).lights();
+    ASSERT_TRUE(sent.has_clusters());
+    EXPECT_DOUBLE_EQ(sent.clusters().radius_rad(), expected) << "budget " << budget;
+  }
 }
 
 TEST_F(StreamProcessing, StatusIsPublishedFromTheHook) {

@@ -43,7 +43,7 @@ struct Fixture {
 };
 
 LightFrameStamp stamp() {
-  return {1'700'000'000'000'000'001, 1'700'000'000'002'000'001, SOURCE_STATE_OK, 4.0, 0.25};
+  return {1'700'000'000'000'000'001, 1'700'000'000'002'000'001, SOURCE_STATE_OK, 4.0};
 }
 
 void expectLights(const LightFrame& out, const LightSet& set) {
@@ -79,7 +79,7 @@ TEST(FrameEncoding, LightFrameCarriesTheFilteredSetNotTheRawOneWhenPresent) {
 TEST(FrameEncoding, LightFrameCarriesTheFramesOwnLightsAndTimesWithoutFilter) {
   Fixture f;
   f.frame.lights.black = true;
-  const LightFrameStamp s{11, 22, SOURCE_STATE_NO_SIGNAL, 0.0, 0.0};
+  const LightFrameStamp s{11, 22, SOURCE_STATE_NO_SIGNAL, 0.0};
   const LightFrame out = lightFrameMessage(f.frame, s).lights();
   expectLights(out, f.frame.lights);
   EXPECT_FALSE(out.filtered());
@@ -99,6 +99,7 @@ TEST(FrameEncoding, LightFrameCarriesTheClusteringOfThePublishedSet) {
   Clustering clustering;
   clustering.clusters = makeSet(2, 7.0F);
   clustering.clusterOfLight = {0, 0, 1, 1};
+  clustering.radiusRad = 0.25;
   f.frame.clustering = clustering;
   const LightFrame out = lightFrameMessage(f.frame, stamp()).lights();
   EXPECT_DOUBLE_EQ(out.filter_delay_frames(), 4.0);

@@ -31,11 +31,11 @@ nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ, 
   ClusteringParams params;
   params.clusterBudget = clusterQ;
   params.layout = layout;
-  return clusteredFrameJson(lights, clusterLights(lights, params), clusterRadiusRad(params), frame);
+  return clusteredFrameJson(lights, clusterLights(lights, params), frame);
 }
 
 nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, const Clustering& clustering,
-                                          std::optional<double> radiusRad, std::uint64_t frame) {
+                                          std::uint64_t frame) {
   nlohmann::ordered_json out = frameJson(clustering.clusters, frame);
   std::vector<nlohmann::ordered_json> members(clustering.clusters.lights.size(),
                                               nlohmann::ordered_json::array());
@@ -44,7 +44,7 @@ nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, const Clusteri
   }
   for (std::size_t c = 0; c < members.size(); ++c) out["lights"][c]["members"] = members[c];
   out["clustered_from"] = lights.lights.size();
-  if (radiusRad) out["radius_rad"] = *radiusRad;
+  out["radius_rad"] = clustering.radiusRad;
   return out;
 }
 

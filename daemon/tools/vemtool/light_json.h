@@ -3,12 +3,11 @@
 // Numbers are the lights' float values written in their shortest round-trip form.
 // A clustered frame adds "clustered_from" (the lights before clustering), "radius_rad" and per
 // cluster "members" (the ids of the lights it holds); its "id" is its seed light's id.
-// vemd's JSON-lines sink (daemon/vemd/sinks/jsonl_light_sink.h) writes the same objects from a
-// clustering it already has, with "radius_rad" only when the radius is known.
+// vemd's JSON-lines sink (daemon/vemd/sinks/jsonl_light_sink.h) writes the same objects from the
+// clustering each frame already has; "radius_rad" is always the radius that clustering was made with.
 #pragma once
 
 #include <cstdint>
-#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -22,10 +21,9 @@ namespace vem::tool {
 [[nodiscard]] nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ,
                                                         MapLayout layout, std::uint64_t frame);
 // The same for a clustering of `lights` made elsewhere (clustering.clusterOfLight has one entry per
-// light); "radius_rad" is written when radiusRad holds a value.
+// light); "radius_rad" is clustering.radiusRad.
 [[nodiscard]] nlohmann::ordered_json clusteredFrameJson(const LightSet& lights,
                                                         const Clustering& clustering,
-                                                        std::optional<double> radiusRad,
                                                         std::uint64_t frame);
 
 }  // namespace vem::tool

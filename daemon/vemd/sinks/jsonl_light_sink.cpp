@@ -30,12 +30,11 @@ int writeAll(int fd, const std::string& text, std::size_t& written) {
 
 }  // namespace
 
-nlohmann::ordered_json lightsLineJson(const ProcessedFrame& frame, std::uint64_t line,
-                                      std::optional<double> radiusRad) {
+nlohmann::ordered_json lightsLineJson(const ProcessedFrame& frame, std::uint64_t line) {
   const PublishedLights published = publishedLights(frame);
   const nlohmann::ordered_json lights =
       published.clustering
-          ? tool::clusteredFrameJson(*published.lights, *published.clustering, radiusRad, line)
+          ? tool::clusteredFrameJson(*published.lights, *published.clustering, line)
           : tool::frameJson(*published.lights, line);
   nlohmann::ordered_json out;
   out["frame"] = line;
@@ -50,23 +49,22 @@ nlohmann::ordered_json lightsLineJson(const ProcessedFrame& frame, std::uint64_t
 }
 
 std::expected<JsonlLightSink, SinkFailure> JsonlLightSink::open(
-    const std::filesystem::path& path, std::optional<double> clusterRadiusRad) {
+    const std::filesystem::path& path) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (fd < 0) {
     return std::unexpected(SinkFailure{"jsonl: cannot open " + path.string() + " for appending (" +
                                        std::strerror(errno) + ")"});
   }
-  return JsonlLightSink(path, recording::FileDescriptor(fd), clusterRadiusRad);
+  return JsonlLightSink(path, recording::FileDescriptor(fd));
 }
 
-JsonlLightSink::JsonlLightSink(std::filesystem::path path, recording::FileDescriptor fd,
-                               std::optional<double> clusterRadiusRad)
-    : path_(std::move(path)), fd_(std::move(fd)), clusterRadiusRad_(clusterRadiusRad) {}
+JsonlLightSink::JsonlLightSink(std::filesystem::path path, recording::FileDescriptor fd)
+    : path_(std::move(path)), fd_(std::move(fd)) {}
 
 std::expected<void, SinkFailure> JsonlLightSink::consume(const ProcessedFrame& frame) {
   assert(frame.captured != nullptr);  // the pipeline always sets it
   if (failed_) return {};
-  const std::string text = lightsLineJson(frame, lines_, clusterRadiusRad_).dump() + '\n';
+  const std::string text = lightsLineJson(frame, lines_).dump() + '\n';
   std::size_t written = 0;
   if (const int error = writeAll(fd_.get(), text, written); error != 0) {
     // Cut the partial line off again (regular files only; best effort) so the file stays lines.

@@ -13,7 +13,8 @@
 //   frame has one ("filtered":true, and "filtered_seq" the frame they stand for), else the frame's
 //   own lights ("filtered":false).
 // - With a clustering, each light is a cluster with "members", and the line adds "clustered_from"
-//   and, when the sink knows the radius, "radius_rad", as `vemtool lights --cluster` does.
+//   and "radius_rad", the radius e that frame's clustering was made with (so a cluster budget
+//   changed while vemd runs shows from the next line on), as `vemtool lights --cluster` does.
 // - Floats are written in their shortest round-trip form: parsing a number back as float gives the
 //   light's float exactly.
 //
@@ -25,7 +26,6 @@
 #include <cstdint>
 #include <expected>
 #include <filesystem>
-#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -35,16 +35,15 @@
 
 namespace vem::vemd {
 
-// The line (without its newline) for `frame`, the sink's `line`-th; radius_rad when radiusRad
-// holds.
-[[nodiscard]] nlohmann::ordered_json lightsLineJson(const ProcessedFrame& frame, std::uint64_t line,
-                                                    std::optional<double> radiusRad);
+// The line (without its newline) for `frame`, the sink's `line`-th.
+[[nodiscard]] nlohmann::ordered_json lightsLineJson(const ProcessedFrame& frame,
+                                                    std::uint64_t line);
 
 class JsonlLightSink final : public Sink {
  public:
   // Opens (creating, 0644) `path` for appending; fails with one sentence when it cannot.
   [[nodiscard]] static std::expected<JsonlLightSink, SinkFailure> open(
-      const std::filesystem::path& path, std::optional<double> clusterRadiusRad);
+      const std::filesystem::path& path);
 
   [[nodiscard]] std::string name() const override { return "jsonl"; }
   [[nodiscard]] std::expected<void, SinkFailure> consume(const ProcessedFrame& frame) override;
@@ -53,13 +52,11 @@ class JsonlLightSink final : public Sink {
   [[nodiscard]] std::uint64_t linesWritten() const { return lines_; }
 
  private:
-  JsonlLightSink(std::filesystem::path path, recording::FileDescriptor fd,
-                 std::optional<double> clusterRadiusRad);
+  JsonlLightSink(std::filesystem::path path, recording::FileDescriptor fd);
   [[nodiscard]] SinkFailure fail(const std::string& what, int error);
 
   std::filesystem::path path_;
   recording::FileDescriptor fd_;
-  std::optional<double> clusterRadiusRad_;
   std::uint64_t lines_ = 0;
   bool failed_ = false;
 };

@@ -98,10 +98,8 @@ cv::Mat previewImage(const EnvMap& map, const LightSet& lights, const Clustering
            glm::dvec2(0.5);
   };
   if (clustering != nullptr) {
-    const double radiusPx =
-        style.clusterRadiusRad && std::isfinite(*style.clusterRadiusRad)
-            ? *style.clusterRadiusRad / thetaMaxRad(map.layout) * map.height * scale
-            : 8.0 * scale;
+    const double radiusPx = std::max(
+        double(scale), clustering->radiusRad / thetaMaxRad(map.layout) * map.height * scale);
     const int thickness = std::max(1, scale / 2);
     for (const Light& cluster : clustering->clusters.lights) {
       drawWrapped(image, imageCoords(cluster.dir), radiusPx, kPreviewClusterBgr, thickness);

@@ -16,7 +16,7 @@
 // - Marks: each light is a filled green disc (BGR 0,255,0) of radius s (1.5 + 3.5 sqrt(Y / Ymax))
 //   pixels, Y the light's Rec. 709 luminance and Ymax the brightest light's, so a disc's area grows
 //   with its power; each cluster is an orange ring (BGR 0,165,255) drawn under the lights, of the
-//   clustering radius in rows (radiusRad / thetaMax H s pixels) when known, else 8 s pixels.
+//   clustering's radius in rows (Clustering::radiusRad / thetaMax H s pixels, at least s).
 #pragma once
 
 #include <optional>
@@ -35,8 +35,7 @@ inline const cv::Vec3b kPreviewLightBgr{0, 255, 0};
 inline const cv::Vec3b kPreviewClusterBgr{0, 165, 255};
 
 struct PreviewStyle {
-  int scale = 2;                           // image pixels per map pixel, >= 1
-  std::optional<double> clusterRadiusRad;  // the clustering radius e, for the rings
+  int scale = 2;  // image pixels per map pixel, >= 1
 };
 
 // The continuous map coordinates (xc in [0, W), yc in [0, H], yc > H below a hemisphere's horizon)

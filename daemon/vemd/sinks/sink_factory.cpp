@@ -30,7 +30,7 @@ std::expected<std::vector<std::unique_ptr<Sink>>, std::string> makeSinks(
     const SinkConfig& config, const RecordingContext& recordingContext) {
   std::vector<std::unique_ptr<Sink>> sinks;
   if (config.jsonl) {
-    auto added = add(sinks, JsonlLightSink::open(*config.jsonl, config.clusterRadiusRad));
+    auto added = add(sinks, JsonlLightSink::open(*config.jsonl));
     if (!added) return std::unexpected(std::move(added.error()));
   }
   if (config.record) {
@@ -45,7 +45,6 @@ std::expected<std::vector<std::unique_ptr<Sink>>, std::string> makeSinks(
     options.every = config.previewEvery;
     options.numbered = config.previewNumbered;
     options.style.scale = config.previewScale;
-    options.style.clusterRadiusRad = config.clusterRadiusRad;
     auto added = add(sinks, PreviewSink::create(*config.previewDir, options));
     if (!added) return std::unexpected(std::move(added.error()));
   }

@@ -27,9 +27,6 @@ struct SinkConfig {
   int previewEvery = 30;                            // one preview per this many frames
   bool previewNumbered = false;                     // also keep preview-SEQ.png files
   int previewScale = 2;                             // preview pixels per polar-map pixel
-  // The clustering radius e (core/light_clustering.h clusterRadiusRad) when vemd clusters: the
-  // JSON lines' "radius_rad" and the preview's rings. Unset: no "radius_rad", rings of fixed size.
-  std::optional<double> clusterRadiusRad;
   std::uint32_t recordSyncEveryFrames = 30;  // recording::WriterOptions::syncEveryFrames
 };
 
