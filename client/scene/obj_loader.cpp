@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <iterator>
+#include <string>
+#include <string_view>
 #include <unordered_map>
 
 #include "client/scene/mesh_normals.h"
@@ -41,13 +43,35 @@ glm::vec3 clampedColour(glm::vec3 colour, const char* field, const std::string& 
   return clamped;
 }
 
-Material fromMtl(const tinyobj::material_t& mtl, Warnings& warnings) {
+// The lobe a material with Ks > 0 and no Pr asks for: MTL's own highlight is Blinn-Phong; the
+// vemcast key `vem_lobe phong` asks for the normalised Phong lobe instead.
+std::expected<Lobe, std::string> highlightLobe(const tinyobj::material_t& mtl) {
+  const auto key = mtl.unknown_parameter.find("vem_lobe");
+  if (key == mtl.unknown_parameter.end()) return Lobe::Blinn;
+  std::string_view value = key->second;
+  const std::size_t first = value.find_first_not_of(" \t\r");
+  value = first == std::string_view::npos ? "" : value.substr(first);
+  value = value.substr(0, value.find_last_not_of(" \t\r") + 1);
+  if (value == "blinn") return Lobe::Blinn;
+  if (value == "phong") return Lobe::Phong;
+  return std::unexpected(fmt::format("material '{}' has vem_lobe '{}', where phong or blinn was "
+                                     "expected",
+                                     mtl.name, value));
+}
+
+std::expected<Material, std::string> fromMtl(const tinyobj::material_t& mtl, Warnings& warnings) {
   Material m;
   m.name = mtl.name;
   const glm::vec3 kd = clampedColour(vec3Of(mtl.diffuse), "Kd", mtl.name, warnings);
   const glm::vec3 ks = clampedColour(vec3Of(mtl.specular), "Ks", mtl.name, warnings);
+  const bool namesLobe = mtl.unknown_parameter.contains("vem_lobe");
   m.diffuseAlbedo = kd;
   if (mtl.roughness > 0) {
+    if (namesLobe) {
+      return std::unexpected(fmt::format("material '{}' has both Pr (a GGX lobe) and vem_lobe, "
+                                         "where one of them was expected",
+                                         mtl.name));
+    }
     const float metallic = std::clamp(static_cast<float>(mtl.metallic), 0.0F, 1.0F);
     m.lobe = Lobe::Ggx;
     m.roughness = std::clamp(static_cast<float>(mtl.roughness), kMinRoughness, 1.0F);
@@ -55,9 +79,14 @@ Material fromMtl(const tinyobj::material_t& mtl, Warnings& warnings) {
         maxComponent(ks) > 0.0F ? ks : glm::mix(glm::vec3(kDielectricF0), kd, metallic);
     m.diffuseAlbedo = kd * (1.0F - metallic);
   } else if (maxComponent(ks) > 0.0F) {
-    m.lobe = Lobe::Blinn;
+    const auto lobe = highlightLobe(mtl);
+    if (!lobe) return std::unexpected(lobe.error());
+    m.lobe = *lobe;
     m.specularAlbedo = ks;
     m.exponent = std::max(static_cast<float>(mtl.shininess), 0.0F);
+  } else if (namesLobe) {
+    warnings.push_back(
+        fmt::format("material '{}': vem_lobe is ignored without Ks > 0 (Lambertian)", mtl.name));
   }
   return m;
 }
@@ -243,7 +272,9 @@ std::expected<Scene, SceneFileFailure> buildScene(const tinyobj::ObjReader& read
   Scene scene;
   scene.name = path.string();
   for (const tinyobj::material_t& mtl : reader.GetMaterials()) {
-    scene.materials.push_back(fromMtl(mtl, warnings));
+    auto material = fromMtl(mtl, warnings);
+    if (!material) return std::unexpected(badContents(path, material.error()));
+    scene.materials.push_back(std::move(*material));
   }
   MeshBuilder builder(reader.GetAttrib(), path);
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {

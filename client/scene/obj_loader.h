@@ -10,7 +10,9 @@
 //   unless no face had any.
 // - Materials (MTL), in the terms of scene/scene.h:
 //     Kd            -> diffuseAlbedo (clamped to [0, 1], with a warning)
-//     Ks > 0, Ns    -> Blinn lobe, specularAlbedo = Ks, exponent = Ns
+//     Ks > 0, Ns    -> Blinn lobe, specularAlbedo = Ks, exponent = Ns; with the vemcast key
+//                      `vem_lobe phong` the normalised Phong lobe instead (`vem_lobe blinn`: the
+//                      default); any other value, or vem_lobe beside Pr, is refused
 //     Pr > 0 (the PBR extension's roughness; tinyobjloader cannot tell "Pr 0" from no Pr)
 //                   -> GGX lobe, roughness = Pr clamped to [0.01, 1],
 //                      specularAlbedo = Ks if Ks > 0, else mix(0.04, Kd, Pm),

@@ -134,6 +134,24 @@ TEST(ObjLoader, MtlMaterialsBecomeLambertianBlinnAndGgxLobes) {
   expectNear(materialOf(2).specularAlbedo, glm::vec3(0.04F));
 }
 
+// MTL has no Phong highlight of its own, so a Phong material could not come from a file at all.
+TEST(ObjLoader, MtlVemLobePhongGivesThePhongLobe) {
+  TempDir dir;
+  dir.write("paints.mtl",
+            "newmtl phong\nKd 0.2 0.2 0.2\nKs 0.3 0.3 0.3\nNs 80\nvem_lobe phong\n"
+            "newmtl blinn\nKd 0.2 0.2 0.2\nKs 0.3 0.3 0.3\nNs 80\nvem_lobe blinn\n");
+  const auto path = dir.write("two.obj",
+                              "mtllib paints.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                              "o tri\nusemtl phong\nf 1 2 3\nusemtl blinn\nf 1 2 3\n");
+  const LoadedScene loaded = loadOrFail(path);
+  ASSERT_EQ(loaded.scene.meshes.size(), 2U);
+  const Material& phong = loaded.scene.materials.at(loaded.scene.meshes[0].material);
+  EXPECT_EQ(phong.lobe, Lobe::Phong);
+  EXPECT_FLOAT_EQ(phong.exponent, 80.0F);
+  expectNear(phong.specularAlbedo, glm::vec3(0.3F));
+  EXPECT_EQ(loaded.scene.materials.at(loaded.scene.meshes[1].material).lobe, Lobe::Blinn);
+}
+
 TEST(ObjLoader, NoMtlGivesOneDefaultGreyLambertian) {
   TempDir dir;
   const LoadedScene loaded = loadOrFail(dir.write("cube.obj", cubeObj(false)));
@@ -153,6 +171,25 @@ TEST(ObjLoaderRefuses, AMissingFileAsNotFound) {
   const auto failure = refusal(dir.path() / "absent.obj");
   EXPECT_EQ(failure.error, SceneFileError::NotFound);
   EXPECT_THAT(failure.message, HasSubstr("does not exist"));
+}
+
+TEST(ObjLoaderRefuses, AVemLobeThatIsNeitherPhongNorBlinn) {
+  TempDir dir;
+  dir.write("m.mtl", "newmtl odd\nKd 0.2 0.2 0.2\nKs 0.3 0.3 0.3\nNs 80\nvem_lobe ward\n");
+  const auto failure = refusal(dir.write(
+      "tri.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl odd\nf 1 2 3\n"));
+  EXPECT_EQ(failure.error, SceneFileError::BadContents);
+  EXPECT_THAT(failure.message,
+              HasSubstr("material 'odd' has vem_lobe 'ward', where phong or blinn was expected"));
+}
+
+TEST(ObjLoaderRefuses, AVemLobeBesidePr) {
+  TempDir dir;
+  dir.write("m.mtl", "newmtl both\nKd 0.2 0.2 0.2\nPr 0.3\nvem_lobe phong\n");
+  const auto failure = refusal(dir.write(
+      "tri.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl both\nf 1 2 3\n"));
+  EXPECT_EQ(failure.error, SceneFileError::BadContents);
+  EXPECT_THAT(failure.message, HasSubstr("has both Pr (a GGX lobe) and vem_lobe"));
 }
 
 TEST(ObjLoaderRefuses, ATruncatedFile) {
