@@ -1,10 +1,8 @@
 // `vemtool subscribe` as a user meets it (runs the built executable against the in-test server):
 // the JSON lines it prints, the statistics line, and one sentence when it gives up.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -17,6 +15,7 @@
 
 #include "client/stream_test_messages.h"
 #include "client/test_stream_server.h"
+#include "support/command_run.h"
 
 namespace vem::client {
 namespace {
@@ -26,16 +25,7 @@ using namespace std::chrono_literals;
 using test::bytesOf;
 using test::TestStreamServer;
 
-struct ToolRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using vem::testing::CommandRun;
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
@@ -55,13 +45,9 @@ class VemtoolSubscribeCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   // Runs vemtool in the background (the test drives the server meanwhile).
-  std::future<ToolRun> start(const std::string& args) const {
+  std::future<CommandRun> start(const std::string& args) const {
     return std::async(std::launch::async, [this, args] {
-      const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-      const std::string command = std::string(VEMTOOL_PATH) + " subscribe " + args + " >" +
-                                  out.string() + " 2>" + err.string();
-      const int status = std::system(command.c_str());
-      return ToolRun{WEXITSTATUS(status), readFile(out), readFile(err)};
+      return vem::testing::runCommand(std::string(VEMTOOL_PATH) + " subscribe " + args, dir_);
     });
   }
   fs::path dir_;
@@ -78,7 +64,7 @@ TEST_F(VemtoolSubscribeCli, PrintsOneJsonLinePerLightFrameAndTheStatistics) {
   EXPECT_EQ(subscribe.subscribe().cubemap_rate_hz(), 1.0);
   server.send(bytesOf(test::environmentMessage(1, 8, 1)));
   for (std::uint64_t seq : {1, 2, 4}) server.send(bytesOf(test::lightFrameMessage(seq, 2)));
-  const ToolRun r = run.get();
+  const CommandRun r = run.get();
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::vector<std::string> out = lines(r.out);
   ASSERT_EQ(out.size(), 4U) << r.out;
@@ -109,7 +95,7 @@ TEST_F(VemtoolSubscribeCli, PrintsOneJsonLinePerLightFrameAndTheStatistics) {
 
 TEST_F(VemtoolSubscribeCli, ExitsWithTheSentenceWhenTheDaemonSpeaksMajor2) {
   TestStreamServer server(0, "", bytesOf(test::helloMessage(), 2));
-  const ToolRun r = start(server.url() + " --frames 1 --timeout 30").get();
+  const CommandRun r = start(server.url() + " --frames 1 --timeout 30").get();
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("protocol major version 2 is not supported (this client speaks 1)"),
             std::string::npos)
@@ -120,13 +106,13 @@ TEST_F(VemtoolSubscribeCli, ExitsWithTheSentenceWhenTheDaemonSpeaksMajor2) {
 TEST_F(VemtoolSubscribeCli, TimesOutWithOneSentenceWhenNoDaemonAnswers) {
   std::uint16_t port = 0;
   { port = TestStreamServer().port(); }  // a port nobody listens on any more
-  const ToolRun r = start("ws://127.0.0.1:" + std::to_string(port) + "/ --frames 1 --timeout 1").get();
+  const CommandRun r = start("ws://127.0.0.1:" + std::to_string(port) + "/ --frames 1 --timeout 1").get();
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("timed out after 1 s with 0 of 1 light frames"), std::string::npos) << r.err;
 }
 
 TEST_F(VemtoolSubscribeCli, RefusesAnAddressThatIsNotAStream) {
-  const ToolRun r = start("http://127.0.0.1:1/ --frames 1").get();
+  const CommandRun r = start("http://127.0.0.1:1/ --frames 1").get();
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("is not a stream address"), std::string::npos) << r.err;
 }

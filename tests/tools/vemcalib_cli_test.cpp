@@ -2,12 +2,10 @@
 // camera file, every refusal of `vemcalib photometric` (one sentence on stderr, a non-zero exit,
 // the old output file byte-identical), `apply` turning a frame back into the map the camera saw,
 // and an example in every command's --help.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -21,25 +19,17 @@
 #include "calib/io/raw_frame_file.h"
 #include "core/env_map.h"
 #include "mapio/map_file.h"
+#include "support/command_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using vem::testing::CommandRun;
+using vem::testing::readTextFile;
 using namespace vem::calib;
 
 const fs::path kExampleCamera =
     fs::path(VEM_SOURCE_DIR) / "config/camera-example.toml";
-
-struct ToolRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 int lineCount(const std::string& text) { return int(std::count(text.begin(), text.end(), '\n')); }
 
@@ -47,12 +37,8 @@ bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-ToolRun runIn(const fs::path& dir, const std::string& args) {
-  const fs::path out = dir / "stdout", err = dir / "stderr";
-  const std::string command =
-      std::string(VEMCALIB_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(command.c_str());
-  return {WEXITSTATUS(status), readFile(out), readFile(err)};
+CommandRun runIn(const fs::path& dir, const std::string& args) {
+  return vem::testing::runCommand(std::string(VEMCALIB_PATH) + " " + args, dir);
 }
 
 // One chart simulated from the example camera, shared by the tests (simulating takes a second).
@@ -73,7 +59,7 @@ class VemcalibCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  [[nodiscard]] ToolRun run(const std::string& args) const { return runIn(dir_, args); }
+  [[nodiscard]] CommandRun run(const std::string& args) const { return runIn(dir_, args); }
   [[nodiscard]] static fs::path sim(const std::string& name) { return chartDir_ / "sim" / name; }
   [[nodiscard]] static std::string frames() {
     return sim("patches-1.png").string() + " " + sim("patches-2.png").string();
@@ -87,7 +73,7 @@ class VemcalibCli : public ::testing::Test {
   }
 
   // `vemcalib photometric` on the chart with the example camera's levels, into dir/OUT.
-  [[nodiscard]] ToolRun photometric(const std::string& framesArg, const fs::path& patches,
+  [[nodiscard]] CommandRun photometric(const std::string& framesArg, const fs::path& patches,
                                     const std::string& extra = "") const {
     return run("photometric --frame " + framesArg + " --patches " + patches.string() +
                " --bits 12 --black-level 64 --saturation 4095 --out " + out().string() + extra);
@@ -97,7 +83,7 @@ class VemcalibCli : public ::testing::Test {
   // Puts the example camera at the output path, for refusals to leave alone.
   std::string existingOutput() const {
     fs::copy_file(kExampleCamera, out(), fs::copy_options::overwrite_existing);
-    return readFile(out());
+    return readTextFile(out());
   }
 
   [[nodiscard]] fs::path patchFile(const std::vector<PatchSpec>& patches) const {
@@ -120,18 +106,18 @@ class VemcalibCli : public ::testing::Test {
   }
 
   // The refusal contract: one sentence on stderr, a non-zero exit, the old output unchanged.
-  void expectRefused(const ToolRun& r, const std::string& before,
+  void expectRefused(const CommandRun& r, const std::string& before,
                      const std::string& mentions) const {
     EXPECT_NE(r.exitCode, 0);
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_EQ(r.err.rfind("vemcalib: error: ", 0), 0U) << r.err;
     EXPECT_TRUE(contains(r.err, mentions)) << r.err;
-    EXPECT_EQ(readFile(out()), before) << "the refused run changed " << out();
+    EXPECT_EQ(readTextFile(out()), before) << "the refused run changed " << out();
   }
 
   fs::path dir_;
   static inline fs::path chartDir_;
-  static inline ToolRun simulateRun_;
+  static inline CommandRun simulateRun_;
 };
 
 TEST_F(VemcalibCli, NewUsersPathFromSimulatedChartToCameraFileRecoversTheExampleResponse) {
@@ -141,7 +127,7 @@ TEST_F(VemcalibCli, NewUsersPathFromSimulatedChartToCameraFileRecoversTheExample
   ASSERT_NE(next, std::string::npos) << printed;
   std::string command = printed.substr(next + 15, printed.find('\n', next) - next - 15);
   command.replace(command.find("--out "), std::string::npos, "--out " + out().string());
-  const ToolRun fit = run(command);
+  const CommandRun fit = run(command);
   ASSERT_EQ(fit.exitCode, 0) << fit.err;
   EXPECT_EQ(fit.err, "");
   for (const char* row : {"p1 ", "p6 ", "c1 ", "c2 "})
@@ -161,7 +147,7 @@ TEST_F(VemcalibCli, NewUsersPathFromSimulatedChartToCameraFileRecoversTheExample
   EXPECT_EQ(fitted->photometricQuality.fitPatches, 6);
   EXPECT_EQ(fitted->photometricQuality.checkPatches, 2);
 
-  const ToolRun show = run("show " + out().string());
+  const CommandRun show = run("show " + out().string());
   ASSERT_EQ(show.exitCode, 0) << show.err;
   EXPECT_TRUE(contains(show.out, "log response")) << show.out;
   EXPECT_TRUE(contains(show.out, "1280 x 1024 px, RGB12")) << show.out;
@@ -170,7 +156,7 @@ TEST_F(VemcalibCli, NewUsersPathFromSimulatedChartToCameraFileRecoversTheExample
 
 TEST_F(VemcalibCli, PhotometricReplacesOnlyThePhotometricSectionOfAnExistingFile) {
   existingOutput();
-  const ToolRun r =
+  const CommandRun r =
       run("photometric --frame " + frames() + " --patches " + sim("patches.toml").string() +
           " --out " + out().string());  // bits and levels from the file
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -216,7 +202,7 @@ TEST_F(VemcalibCli, RefusesAFitResidualAboveMaxResidualWhichIsSettable) {
   std::vector<PatchSpec> off = chart();
   off[2].luminanceCdM2 *= 1.02;  // p3 2 % off the curve
   const fs::path patches = patchFile(off);
-  const ToolRun refused = photometric(frames(), patches, " --max-residual 0.5");
+  const CommandRun refused = photometric(frames(), patches, " --max-residual 0.5");
   expectRefused(refused, before, "--max-residual");
   EXPECT_TRUE(contains(refused.out, "p3 ")) << "the table still shows the fit";
   EXPECT_EQ(photometric(frames(), patches).exitCode, 0) << "2 % passes the default 3 %";
@@ -250,13 +236,13 @@ TEST_F(VemcalibCli, RefusesFramesThatDoNotFitTheOutputsCamera) {
 
 TEST_F(VemcalibCli, NeverOverwritesAnOutputFileThatDoesNotLoad) {
   std::ofstream(out()) << "format = \"vemcast-camera\"\nversion = 7\n";
-  const std::string before = readFile(out());
+  const std::string before = readTextFile(out());
   expectRefused(photometric(frames(), sim("patches.toml")), before, "unknown version 7");
 }
 
 TEST_F(VemcalibCli, CorruptFrameAndBadExposureGiveOneSentence) {
   const std::string before = existingOutput();
-  const std::string png = readFile(sim("patches-1.png"));
+  const std::string png = readTextFile(sim("patches-1.png"));
   std::ofstream(dir_ / "cut.png", std::ios::binary) << png.substr(0, png.size() / 2);
   expectRefused(photometric((dir_ / "cut.png").string(), sim("patches.toml")), before, "cut.png");
   expectRefused(photometric(sim("patches-1.png").string() + "@-5", sim("patches.toml")), before,
@@ -264,10 +250,10 @@ TEST_F(VemcalibCli, CorruptFrameAndBadExposureGiveOneSentence) {
 }
 
 TEST_F(VemcalibCli, ShowRefusesABadCameraFileWithTheLoadersSentenceAndExit2) {
-  std::string text = readFile(kExampleCamera);
+  std::string text = readTextFile(kExampleCamera);
   text.replace(text.find("unit = \"px\" }     # k1"), 13, "unit = \"mm\" }");
   std::ofstream(dir_ / "bad.toml") << text;
-  const ToolRun r = run("show " + (dir_ / "bad.toml").string());
+  const CommandRun r = run("show " + (dir_ / "bad.toml").string());
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_TRUE(contains(r.err, "bad.toml: geometric.k: expected unit \"px\", found \"mm\""))
@@ -276,7 +262,7 @@ TEST_F(VemcalibCli, ShowRefusesABadCameraFileWithTheLoadersSentenceAndExit2) {
 }
 
 TEST_F(VemcalibCli, ShowPrintsTheExampleCamerasModelFieldOfViewResidualsAndDates) {
-  const ToolRun r = run("show " + kExampleCamera.string());
+  const CommandRun r = run("show " + kExampleCamera.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* part : {"HDRC-Example", "log response", "field of view 190 deg", "rms residual",
                            "rms reprojection", "2026-11-22T00:00:00Z"})
@@ -297,11 +283,11 @@ TEST_F(VemcalibCli, ApplyTurnsASimulatedFrameBackIntoTheSkyTheCameraSaw) {
       sky.set(x, y, glm::vec3(testSky(vem::pixelCentreDirection(sky, x, y))));
   ASSERT_TRUE(vem::mapio::saveMap(sky, dir_ / "sky.exr"));
   const std::string camera = kExampleCamera.string();
-  const ToolRun simulated =
+  const CommandRun simulated =
       run("simulate frame --camera " + camera + " --map " + (dir_ / "sky.exr").string() +
           " --noise 0 --out " + (dir_ / "raw.png").string());
   ASSERT_EQ(simulated.exitCode, 0) << simulated.err;
-  const ToolRun applied =
+  const CommandRun applied =
       run("apply --camera " + camera + " --frame " + (dir_ / "raw.png").string() + " --out " +
           (dir_ / "map.exr").string() + " --width 64 --mask-out " + (dir_ / "mask.png").string());
   ASSERT_EQ(applied.exitCode, 0) << applied.err;
@@ -329,13 +315,13 @@ TEST_F(VemcalibCli, ApplyRefusesACameraWithoutLensAndAFrameOfAnotherSize) {
   CameraCalibration noLens = *io::loadCameraFile(kExampleCamera);
   noLens.lens.reset();
   ASSERT_TRUE(io::saveCameraFile(noLens, dir_ / "nolens.toml"));
-  const ToolRun a = run("apply --camera " + (dir_ / "nolens.toml").string() + " --frame " +
+  const CommandRun a = run("apply --camera " + (dir_ / "nolens.toml").string() + " --frame " +
                         sim("patches-1.png").string() + " --out " + (dir_ / "m.exr").string());
   EXPECT_EQ(a.exitCode, 2);
   EXPECT_EQ(lineCount(a.err), 1) << a.err;
   EXPECT_TRUE(contains(a.err, "nolens.toml: the camera has no geometric section")) << a.err;
   ASSERT_TRUE(io::saveRawFrame(RawFrame::blank(64, 48, {3, 12}), dir_ / "small.png"));
-  const ToolRun b = run("apply --camera " + kExampleCamera.string() + " --frame " +
+  const CommandRun b = run("apply --camera " + kExampleCamera.string() + " --frame " +
                         (dir_ / "small.png").string() + " --out " + (dir_ / "m.exr").string());
   EXPECT_EQ(b.exitCode, 2);
   EXPECT_EQ(lineCount(b.err), 1) << b.err;
@@ -347,7 +333,7 @@ TEST_F(VemcalibCli, HelpOfTheToolAndOfEveryCommandShowsAnExample) {
   for (const char* command :
        {"", "photometric", "fisheye", "response", "simulate", "apply", "show", "simulate patches",
         "simulate frame", "simulate boards", "simulate brackets"}) {
-    const ToolRun r = run(std::string(command) + " --help");
+    const CommandRun r = run(std::string(command) + " --help");
     EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.out, "Example")) << "vemcalib " << command << " --help:\n" << r.out;
   }

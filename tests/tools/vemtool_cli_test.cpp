@@ -1,6 +1,5 @@
 // vemtool as a user meets it: the JSON it prints, and one clear error line for each kind of bad
 // input.
-#include <sys/wait.h>
 #include <unistd.h>
 #include <algorithm>
 #include <array>
@@ -17,21 +16,12 @@
 
 #include "core/env_map.h"
 #include "mapio/map_file.h"
+#include "support/command_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct ToolRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using vem::testing::CommandRun;
 
 class VemtoolCli : public ::testing::Test {
  protected:
@@ -41,12 +31,8 @@ class VemtoolCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  ToolRun run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string command =
-        std::string(VEMTOOL_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), readFile(out), readFile(err)};
+  CommandRun run(const std::string& args) const {
+    return vem::testing::runCommand(std::string(VEMTOOL_PATH) + " " + args, dir_);
   }
   fs::path dir_;
 };
@@ -56,7 +42,7 @@ int lineCount(const std::string& text) { return int(std::count(text.begin(), tex
 TEST_F(VemtoolCli, LightsPrintsOneJsonFrameWithNUnitLightsInIdOrder) {
   vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 64, 32, glm::vec3(1.0F));
   ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "grey.pfm"));
-  const ToolRun r = run("lights --in " + (dir_ / "grey.pfm").string() + " --count 16");
+  const CommandRun r = run("lights --in " + (dir_ / "grey.pfm").string() + " --count 16");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.err, "");
   ASSERT_EQ(lineCount(r.out), 1);
@@ -77,7 +63,7 @@ TEST_F(VemtoolCli, LightsPrintsOneJsonFrameWithNUnitLightsInIdOrder) {
 }
 
 TEST_F(VemtoolCli, MissingFileGivesOneErrorLineAndFails) {
-  const ToolRun r = run("lights --in " + (dir_ / "nothere.exr").string() + " --count 4");
+  const CommandRun r = run("lights --in " + (dir_ / "nothere.exr").string() + " --count 4");
   EXPECT_NE(r.exitCode, 0);
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("nothere.exr"), std::string::npos);
@@ -89,7 +75,7 @@ TEST_F(VemtoolCli, UnreadableOrTruncatedFilesGiveOneErrorLineAndFail) {
   std::ofstream(dir_ / "truncated.pfm") << "PF\n2 1\n-1.0\nabc";  // OpenCV prints its own line here
   std::ofstream(dir_ / "truncated.hdr") << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\nab";
   for (const char* name : {"garbage.exr", "truncated.pfm", "truncated.hdr"}) {
-    const ToolRun r = run("lights --in " + (dir_ / name).string() + " --count 4");
+    const CommandRun r = run("lights --in " + (dir_ / name).string() + " --count 4");
     EXPECT_NE(r.exitCode, 0) << name;
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
@@ -109,7 +95,7 @@ TEST_F(VemtoolCli, ZeroAbsurdOrMissingCountAndUnknownOptionsAreRefusedInOneLine)
                                        "lights --count 4",
                                        "frobnicate"};
   for (const std::string& args : cases) {
-    const ToolRun r = run(args);
+    const CommandRun r = run(args);
     EXPECT_NE(r.exitCode, 0) << args;
     EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
     EXPECT_EQ(r.out, "") << args;
@@ -122,7 +108,7 @@ TEST_F(VemtoolCli, NanInfAndNegativePixelsAreCountedInOneWarning) {
   map.set(2, 1, glm::vec3(std::numeric_limits<float>::infinity(), 1, 1));
   map.set(3, 2, glm::vec3(1, -2, 1));
   ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "bad.pfm"));
-  const ToolRun r = run("lights --in " + (dir_ / "bad.pfm").string() + " --count 8");
+  const CommandRun r = run("lights --in " + (dir_ / "bad.pfm").string() + " --count 8");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("3 pixels"), std::string::npos) << r.err;
@@ -132,7 +118,7 @@ TEST_F(VemtoolCli, NanInfAndNegativePixelsAreCountedInOneWarning) {
 TEST_F(VemtoolCli, ClusterAddsMembersThatCoverEveryLightOnce) {
   vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 64, 32, glm::vec3(1.0F));
   ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "grey.pfm"));
-  const ToolRun r = run("lights --in " + (dir_ / "grey.pfm").string() + " --count 64 --cluster 8");
+  const CommandRun r = run("lights --in " + (dir_ / "grey.pfm").string() + " --count 64 --cluster 8");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto frame = nlohmann::json::parse(r.out);
   EXPECT_EQ(frame["clustered_from"], 64);

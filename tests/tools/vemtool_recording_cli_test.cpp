@@ -1,10 +1,8 @@
 // `vemtool info` and `vemtool recover` as a user meets them: the summary they print, the index
 // recover restores, and one clear error line for files that are not recordings.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -19,6 +17,7 @@
 #include "recording/recording_index.h"
 #include "recording/recording_header.h"
 #include "recording/recording_fixtures.h"
+#include "support/command_run.h"
 
 namespace {
 
@@ -26,31 +25,19 @@ namespace fs = std::filesystem;
 using vem::testing::readBytes;
 using vem::testing::writeBytes;
 
-struct ToolRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
+using vem::testing::CommandRun;
 
 class VemtoolRecordingCli : public vem::testing::RecordingFiles {
  protected:
-  ToolRun run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
-    const std::string command =
-        std::string(VEMTOOL_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    const auto text = [](const fs::path& p) {
-      const std::vector<char> bytes = readBytes(p);
-      return std::string(bytes.begin(), bytes.end());
-    };
-    return {WEXITSTATUS(status), text(out), text(err)};
+  CommandRun run(const std::string& args) const {
+    return vem::testing::runCommand(std::string(VEMTOOL_PATH) + " " + args, dir_);
   }
 };
 
 TEST_F(VemtoolRecordingCli, InfoJsonReportsHeaderFramesRateAndAValidIndex) {
   const fs::path path = dir_ / "a.vem";
   vem::testing::writeSmallRecording(path, 20);
-  const ToolRun r = run("info " + path.string() + " --format json");
+  const CommandRun r = run("info " + path.string() + " --format json");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.err, "");
   const auto j = nlohmann::json::parse(r.out);
@@ -75,7 +62,7 @@ TEST_F(VemtoolRecordingCli, InfoJsonReportsHeaderFramesRateAndAValidIndex) {
 TEST_F(VemtoolRecordingCli, InfoTextNamesFramesDamageAndIndex) {
   const fs::path path = dir_ / "a.vem";
   vem::testing::writeSmallRecording(path, 5);
-  const ToolRun r = run("info " + path.string());
+  const CommandRun r = run("info " + path.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("frames:      5 (seq 0 .. 4), 3 with lights\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("damage:      0 damaged records"), std::string::npos) << r.out;
@@ -89,26 +76,26 @@ TEST_F(VemtoolRecordingCli, RecoverRestoresTheIndexThatInfoReportsMissing) {
   bytes.resize(bytes.size() - vem::recording::kFooterRecordBytes - 30);  // cut into the index
   writeBytes(path, bytes.data(), bytes.size());
 
-  const ToolRun before = run("info " + path.string() + " --format json");
+  const CommandRun before = run("info " + path.string() + " --format json");
   ASSERT_EQ(before.exitCode, 0) << before.err;
   const auto b = nlohmann::json::parse(before.out);
   EXPECT_EQ(b["index"], "missing");
   EXPECT_EQ(b["frames"], 10);
   EXPECT_GT(b["truncated_tail_bytes"], 0);
 
-  const ToolRun recover = run("recover " + path.string());
+  const CommandRun recover = run("recover " + path.string());
   ASSERT_EQ(recover.exitCode, 0) << recover.err;
   EXPECT_NE(recover.out.find("appended a new index of 10 frames"), std::string::npos)
       << recover.out;
 
-  const ToolRun after = run("info " + path.string() + " --format json");
+  const CommandRun after = run("info " + path.string() + " --format json");
   ASSERT_EQ(after.exitCode, 0) << after.err;
   const auto a = nlohmann::json::parse(after.out);
   EXPECT_EQ(a["index"], "valid");
   EXPECT_EQ(a["index_entries"], 10);
   EXPECT_EQ(a["frames"], 10);
 
-  const ToolRun again = run("recover " + path.string());
+  const CommandRun again = run("recover " + path.string());
   ASSERT_EQ(again.exitCode, 0);
   EXPECT_NE(again.out.find("already valid"), std::string::npos) << again.out;
 }
@@ -117,7 +104,7 @@ TEST_F(VemtoolRecordingCli, NotARecordingGivesOneErrorLineAndFails) {
   const fs::path path = dir_ / "notes.vem";
   writeBytes(path, "just text\n", 10);
   for (const char* command : {"info ", "recover "}) {
-    const ToolRun r = run(command + path.string());
+    const CommandRun r = run(command + path.string());
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err, "vemtool: error: " + path.string() +
@@ -133,12 +120,12 @@ TEST_F(VemtoolRecordingCli, UnknownVersionAndMissingFileGiveOneClearSentence) {
   const auto record = vem::recording::encodeHeaderRecord(header);
   const fs::path path = dir_ / "v2.vem";
   writeBytes(path, reinterpret_cast<const char*>(record.data()), record.size());
-  const ToolRun r = run("info " + path.string());
+  const CommandRun r = run("info " + path.string());
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(r.err, "vemtool: error: " + path.string() +
                        ": VEM format version 2 is not supported (expected version 1; a newer "
                        "vemcast may read it)\n");
-  const ToolRun missing = run("info " + (dir_ / "nothere.vem").string());
+  const CommandRun missing = run("info " + (dir_ / "nothere.vem").string());
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_EQ(missing.err, "vemtool: error: " + (dir_ / "nothere.vem").string() + ": no such file\n");
 }

@@ -2,12 +2,10 @@
 // recording that info describes, a frame exported to a map that `lights` reads and that points at
 // the scene's sun, raw codes exported bit for bit, shared HDRIs imported, and one error line with
 // nothing left at --out for each kind of bad input.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -25,25 +23,17 @@
 #include "core/color.h"
 #include "mapio/map_file.h"
 #include "recording/recording_reader.h"
+#include "support/command_run.h"
 #include "synth/default_camera.h"
 #include "synth/sky_scene.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using vem::testing::CommandRun;
+using vem::testing::readTextFile;
 
 const std::string kHdri = std::string(VEM_SHARED_DATA_DIR) + "/hdri/";
-
-struct ToolRun {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 int lineCount(const std::string& text) { return int(std::count(text.begin(), text.end(), '\n')); }
 
@@ -60,12 +50,8 @@ class VemtoolSynthCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_.parent_path()); }
 
-  ToolRun run(const std::string& args) const {
-    const fs::path out = logs_ / "stdout", err = logs_ / "stderr";
-    const std::string command =
-        std::string(VEMTOOL_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), readFile(out), readFile(err)};
+  CommandRun run(const std::string& args) const {
+    return vem::testing::runCommand(std::string(VEMTOOL_PATH) + " " + args, logs_);
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   // The names in the work folder (temporary files included: they start with a dot).
@@ -78,7 +64,7 @@ class VemtoolSynthCli : public ::testing::Test {
   // A failed command: a non-zero exit, one error line, and the work folder as it was.
   void expectRefused(const std::string& args, const std::string& errorPart) const {
     const std::vector<std::string> before = workFiles();
-    const ToolRun r = run(args);
+    const CommandRun r = run(args);
     EXPECT_NE(r.exitCode, 0) << args;
     EXPECT_EQ(lineCount(r.err), 1) << r.err;
     EXPECT_TRUE(r.err.starts_with("vemtool: error: ")) << r.err;
@@ -91,14 +77,14 @@ class VemtoolSynthCli : public ::testing::Test {
 };
 
 TEST_F(VemtoolSynthCli, SynthRecordsNFramesAtTheRateThatInfoReports) {
-  const ToolRun r = run("synth --scene sky --frames 3 --rate 30 --out " + path("sky.vem"));
+  const CommandRun r = run("synth --scene sky --frames 3 --rate 30 --out " + path("sky.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("wrote " + path("sky.vem") + ": 3 frames of scene sky at 30 Hz"),
             std::string::npos)
       << r.out;
   EXPECT_EQ(workFiles(), std::vector<std::string>{"sky.vem"});  // no temporary left
 
-  const ToolRun i = run("info " + path("sky.vem") + " --format json");
+  const CommandRun i = run("info " + path("sky.vem") + " --format json");
   ASSERT_EQ(i.exitCode, 0) << i.err;
   const auto j = nlohmann::json::parse(i.out);
   EXPECT_EQ(j["frames"], 3);
@@ -124,14 +110,14 @@ TEST_F(VemtoolSynthCli, SynthRecordsNFramesAtTheRateThatInfoReports) {
 }
 
 TEST_F(VemtoolSynthCli, SynthCreatesTheFolderOfItsOutput) {
-  const ToolRun r = run("synth --scene sky --frames 1 --rate 30 --out " + path("runs/a/sky.vem"));
+  const CommandRun r = run("synth --scene sky --frames 1 --rate 30 --out " + path("runs/a/sky.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(fs::is_regular_file(dir_ / "runs" / "a" / "sky.vem"));
 }
 
 TEST_F(VemtoolSynthCli, ExportedFrameIsAMapWhoseStrongestLightIsTheSun) {
   ASSERT_EQ(run("synth --scene sky --frames 3 --rate 30 --out " + path("sky.vem")).exitCode, 0);
-  const ToolRun e = run("export " + path("sky.vem") + " --frame 2 --out " + path("sky-2.exr"));
+  const CommandRun e = run("export " + path("sky.vem") + " --frame 2 --out " + path("sky-2.exr"));
   ASSERT_EQ(e.exitCode, 0) << e.err;
   EXPECT_NE(e.out.find("1024 x 256 hemisphere map"), std::string::npos) << e.out;
   const auto map = vem::mapio::loadMap(path("sky-2.exr"));
@@ -139,7 +125,7 @@ TEST_F(VemtoolSynthCli, ExportedFrameIsAMapWhoseStrongestLightIsTheSun) {
   EXPECT_EQ(map->width, 1024);
   EXPECT_EQ(map->height, 256);
 
-  const ToolRun l = run("lights --in " + path("sky-2.exr") + " --count 1024 --cluster 256");
+  const CommandRun l = run("lights --in " + path("sky-2.exr") + " --count 1024 --cluster 256");
   ASSERT_EQ(l.exitCode, 0) << l.err;
   const auto lights = nlohmann::json::parse(l.out)["lights"];
   const auto strongest = std::ranges::max_element(lights, {}, [](const nlohmann::json& light) {
@@ -157,7 +143,7 @@ TEST_F(VemtoolSynthCli, ExportRawWritesTheRecordedCodesBitForBit) {
       run("synth --scene fluorescent --frames 2 --rate 30 --noise 2 --out " + path("room.vem"))
           .exitCode,
       0);
-  const ToolRun e =
+  const CommandRun e =
       run("export " + path("room.vem") + " --frame 1 --raw --out " + path("room-1.png"));
   ASSERT_EQ(e.exitCode, 0) << e.err;
   const auto png = vem::calib::io::loadRawFrame(path("room-1.png"), 12);
@@ -172,11 +158,11 @@ TEST_F(VemtoolSynthCli, ExportRawWritesTheRecordedCodesBitForBit) {
 }
 
 TEST_F(VemtoolSynthCli, ImportRecordsEachSharedHdriAsAFrame) {
-  const ToolRun r = run("import --in " + kHdri + "park.exr " + kHdri + "sky.exr --rate 10 --out " +
+  const CommandRun r = run("import --in " + kHdri + "park.exr " + kHdri + "sky.exr --rate 10 --out " +
                         path("two.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("2 frames from 2 files at 10 Hz"), std::string::npos) << r.out;
-  const ToolRun i = run("info " + path("two.vem") + " --format json");
+  const CommandRun i = run("info " + path("two.vem") + " --format json");
   const auto j = nlohmann::json::parse(i.out);
   EXPECT_EQ(j["frames"], 2);
   EXPECT_EQ(j["last_ts_ns"], 100'000'000);
@@ -191,7 +177,7 @@ TEST_F(VemtoolSynthCli, ImportRecordsEachSharedHdriAsAFrame) {
 }
 
 TEST_F(VemtoolSynthCli, ImportExpandsAQuotedPatternInSortedOrder) {
-  const ToolRun r = run("import --in '" + kHdri + "su*.exr' --rate 30 --out " + path("suns.vem"));
+  const CommandRun r = run("import --in '" + kHdri + "su*.exr' --rate 30 --out " + path("suns.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("2 frames from 2 files"), std::string::npos) << r.out;  // sunrise, sunset
 }
@@ -203,7 +189,7 @@ TEST_F(VemtoolSynthCli, ImportTreatsVideoCodesOverTwoFiftyFiveAsLinearRadiance) 
   ASSERT_TRUE(video.isOpened());
   for (int k = 0; k < 3; ++k) video.write(cv::Mat(64, 128, CV_8UC3, cv::Scalar(20, 100, 200)));
   video.release();
-  const ToolRun r =
+  const CommandRun r =
       run("import --in " + path("pano.avi") + " --rate 10 --scale 100 --out " + path("pano.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("3 frames from 1 files at 10 Hz"), std::string::npos) << r.out;
@@ -229,11 +215,11 @@ TEST_F(VemtoolSynthCli, ExistingOutputIsKeptUnlessOverwriteIsGiven) {
   std::ofstream(path("keep.vem")) << "precious";
   expectRefused("synth --scene sky --frames 1 --rate 30 --out " + path("keep.vem"),
                 "a file is already there");
-  EXPECT_EQ(readFile(path("keep.vem")), "precious");
-  const ToolRun r =
+  EXPECT_EQ(readTextFile(path("keep.vem")), "precious");
+  const CommandRun r =
       run("synth --scene sky --frames 1 --rate 30 --overwrite --out " + path("keep.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(readFile(path("keep.vem")), "precious");
+  EXPECT_NE(readTextFile(path("keep.vem")), "precious");
 }
 
 TEST_F(VemtoolSynthCli, CameraWithoutALensIsRefused) {
@@ -270,7 +256,7 @@ TEST_F(VemtoolSynthCli, ImportFailingMidwayLeavesNoPartialRecording) {
 
 TEST_F(VemtoolSynthCli, EveryCommandHasHelpWithAnExample) {
   for (const char* command : {"synth", "export", "import"}) {
-    const ToolRun r = run(std::string(command) + " --help");
+    const CommandRun r = run(std::string(command) + " --help");
     EXPECT_EQ(r.exitCode, 0) << command;
     EXPECT_NE(r.out.find("Example:"), std::string::npos) << command;
   }

@@ -18,22 +18,11 @@
 #include <gtest/gtest.h>
 
 #include "recording/recording_reader.h"
+#include "support/command_run.h"
 #include "vemd_fixtures.h"
 
 namespace vem::testing {
 namespace {
-
-struct DaemonRun {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 class VemdCli : public VemdFiles {
  protected:
@@ -48,19 +37,16 @@ class VemdCli : public VemdFiles {
   }
 
   // `args` after --config small.toml, or alone when `withSmallConfig` is false.
-  DaemonRun run(const std::string& args, bool withSmallConfig = true) const {
-    const fs::path out = dir_ / "stdout", err = dir_ / "stderr";
+  CommandRun run(const std::string& args, bool withSmallConfig = true) const {
     const std::string program = withSmallConfig ? vemd() : std::string(VEMD_PATH);
-    const std::string command = program + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), slurp(out), slurp(err)};
+    return runCommand(program + " " + args, dir_);
   }
 };
 
 TEST_F(VemdCli, ReplaysNFramesAndPrintsTheFinalReport) {
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 6, false);
-  const DaemonRun r = run("--source replay:" + path.string() +
+  const CommandRun r = run("--source replay:" + path.string() +
                           " --rate max --frames 4 --lights 64 --stats-every 0");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("final "), std::string::npos) << r.err;
@@ -73,10 +59,10 @@ TEST_F(VemdCli, ReplaysNFramesAndPrintsTheFinalReport) {
 TEST_F(VemdCli, WritesTheLightsOfEveryFrameToTheJsonlFile) {
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 5, false);
-  const DaemonRun r = run("--source replay:" + path.string() + " --rate max --lights 16 --out " +
+  const CommandRun r = run("--source replay:" + path.string() + " --rate max --lights 16 --out " +
                           dir_.string() + " --jsonl lights.jsonl");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::string lines = slurp(dir_ / "lights.jsonl");
+  const std::string lines = readTextFile(dir_ / "lights.jsonl");
   EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 5) << lines;
 }
 
@@ -86,10 +72,10 @@ TEST_F(VemdCli, OutFolderThatDoesNotExistYetIsCreatedWithJsonlAndNumberedPreview
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 5, false);
   const fs::path out = dir_ / "new" / "out";
-  const DaemonRun r = run("--source replay:" + path.string() + " --rate max --lights 16 --out " +
+  const CommandRun r = run("--source replay:" + path.string() + " --rate max --lights 16 --out " +
                           out.string() + " --jsonl lights.jsonl --preview-every 2 --preview-numbered");
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::string lines = slurp(out / "lights.jsonl");
+  const std::string lines = readTextFile(out / "lights.jsonl");
   EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 5) << lines;
   EXPECT_TRUE(fs::exists(out / "preview.png"));
   for (const char* kept : {"preview-0000000000.png", "preview-0000000002.png",
@@ -103,7 +89,7 @@ TEST_F(VemdCli, OutPathThatIsAFileIsRefusedInOneSentence) {
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 2, false);
   std::ofstream(dir_ / "a-file") << "x";
-  const DaemonRun r = run("--source replay:" + path.string() + " --out " +
+  const CommandRun r = run("--source replay:" + path.string() + " --out " +
                           (dir_ / "a-file").string() + " --jsonl lights.jsonl");
   EXPECT_EQ(r.exitCode, 1) << r.err;
   EXPECT_NE(r.err.find("output.dir: cannot use " + (dir_ / "a-file").string() +
@@ -140,10 +126,10 @@ TEST_F(VemdCli, SigtermStopsCleanlyAndTheRecordingGetsItsIndex) {
   ::kill(pid, SIGTERM);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-  ASSERT_TRUE(recording) << slurp(err);
-  ASSERT_TRUE(WIFEXITED(status)) << slurp(err);
-  EXPECT_EQ(WEXITSTATUS(status), 0) << slurp(err);
-  EXPECT_NE(slurp(err).find("stopping: a stop was requested"), std::string::npos) << slurp(err);
+  ASSERT_TRUE(recording) << readTextFile(err);
+  ASSERT_TRUE(WIFEXITED(status)) << readTextFile(err);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << readTextFile(err);
+  EXPECT_NE(readTextFile(err).find("stopping: a stop was requested"), std::string::npos) << readTextFile(err);
   auto reader = recording::RecordingReader::open(recorded);
   ASSERT_TRUE(reader) << reader.error().message;
   EXPECT_TRUE(reader->hasIndex());
@@ -161,7 +147,7 @@ TEST_F(VemdCli, SyntheticSceneFromAConfigFileReportsCaptureToLightsLatency) {
                         << camera.string()
                         << "\"\n[processing]\n"
                            "map_width = 256\nmap_height = 64\nlights = 64\n";
-  const DaemonRun r = run("--config " + config.string(), false);
+  const CommandRun r = run("--config " + config.string(), false);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("5 in, "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("capture-to-lights "), std::string::npos) << r.err;
@@ -171,7 +157,7 @@ TEST_F(VemdCli, SyntheticSceneFromAConfigFileReportsCaptureToLightsLatency) {
 TEST_F(VemdCli, PrintsAStatisticsLineEveryFewSecondsWhileRunning) {
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 12, false);
-  const DaemonRun r =
+  const CommandRun r =
       run("--source replay:" + path.string() + " --rate 30 --lights 16 --stats-every 0.1");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("info: stats 0."), std::string::npos) << r.err;
@@ -213,7 +199,7 @@ TEST_F(VemdCli, TellsTheServiceManagerReadyWatchdogStatusAndStopping) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   daemon.join();
-  ASSERT_EQ(status, 0) << slurp(dir_ / "err");
+  ASSERT_EQ(status, 0) << readTextFile(dir_ / "err");
   ::close(fd);
   const auto position = [&](const std::string& prefix) {
     for (std::size_t i = 0; i < messages.size(); ++i) {
@@ -229,13 +215,13 @@ TEST_F(VemdCli, TellsTheServiceManagerReadyWatchdogStatusAndStopping) {
 }
 
 TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {
-  const DaemonRun r = run("--frames 1");
+  const CommandRun r = run("--frames 1");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("no source given: expected --source"), std::string::npos) << r.err;
 }
 
 TEST_F(VemdCli, BadFlagExitsWithUsageStatus) {
-  const DaemonRun r = run("--lights 0");
+  const CommandRun r = run("--lights 0");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("--lights: expected a whole number from 1 to 65536, found 0"),
             std::string::npos)
@@ -254,7 +240,7 @@ TEST_F(VemdCli, RecordingFromAnotherCameraIsRefusedAtStart) {
     ASSERT_TRUE(writer->append(0, 0, cachedSkyFrame(0)));
     ASSERT_TRUE(writer->close());
   }
-  const DaemonRun r = run("--source replay:" + path.string());
+  const CommandRun r = run("--source replay:" + path.string());
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("the frames are 320 x 256 Mono12 but the calibration is for a 640 x 512 "
                        "Mono12 camera"),

@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using vem::testing::ViewRun;
+using vem::testing::CommandRun;
 
 std::vector<nlohmann::json> jsonLines(const fs::path& path) {
   std::vector<nlohmann::json> lines;
@@ -35,13 +35,13 @@ std::vector<nlohmann::json> jsonLines(const fs::path& path) {
 
 class VemviewCli : public vem::testing::VemviewProcessTest {
  protected:
-  ViewRun run(const std::string& args) const { return VemviewProcessTest::run("", args); }
+  CommandRun run(const std::string& args) const { return VemviewProcessTest::run("", args); }
   void write(const std::string& name, const std::string& text) const {
     std::ofstream(dir_ / name) << text;
   }
   // Exit non-zero with one line that names `part`.
   void expectRefused(const std::string& args, const std::string& part) const {
-    const ViewRun r = run(args);
+    const CommandRun r = run(args);
     EXPECT_NE(r.exitCode, 0) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_TRUE(r.err.starts_with("vemview: error: ")) << r.err;
@@ -52,7 +52,7 @@ class VemviewCli : public vem::testing::VemviewProcessTest {
 const std::string kSmall = " --headless --width 64 --height 48 --count 16 --shadowed 8 ";
 
 TEST_F(VemviewCli, HeadlessRunWritesPngExrAndOneTimingLinePerFrame) {
-  const ViewRun r = run(kSmall + "--scene spheres --frames 2 --orbit 10 --out " + path("out"));
+  const CommandRun r = run(kSmall + "--scene spheres --frames 2 --orbit 10 --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (const char* name :
        {"frame-000000.png", "frame-000000.exr", "frame-000001.png", "frame-000001.exr"}) {
@@ -69,7 +69,7 @@ TEST_F(VemviewCli, HeadlessRunWritesPngExrAndOneTimingLinePerFrame) {
 }
 
 TEST_F(VemviewCli, StaticLightsAndCameraAreDrawnOnceAndNotRedrawn) {
-  const ViewRun r = run(kSmall + "--scene spheres --frames 3 --out " + path("out"));
+  const CommandRun r = run(kSmall + "--scene spheres --frames 3 --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
   ASSERT_EQ(lines.size(), 3U);
@@ -81,7 +81,7 @@ TEST_F(VemviewCli, StaticLightsAndCameraAreDrawnOnceAndNotRedrawn) {
 }
 
 TEST_F(VemviewCli, OrbitingCameraRedrawsButReusesTheShadowMaps) {
-  const ViewRun r = run(kSmall + "--scene spheres --frames 3 --orbit 15 --out " + path("out"));
+  const CommandRun r = run(kSmall + "--scene spheres --frames 3 --orbit 15 --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
   ASSERT_EQ(lines.size(), 3U);
@@ -94,21 +94,21 @@ TEST_F(VemviewCli, OrbitingCameraRedrawsButReusesTheShadowMaps) {
 }
 
 TEST_F(VemviewCli, LambertianSceneSkipsTheGlossyPassAndTheCubeMap) {
-  const ViewRun r = run(kSmall + "--scene diffuse --out " + path("out"));
+  const CommandRun r = run(kSmall + "--scene diffuse --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("no glossy pass (no glossy material)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("no cube map"), std::string::npos) << r.err;
 }
 
 TEST_F(VemviewCli, GlossySceneGetsTheLHPassAndTheCubeMap) {
-  const ViewRun r = run(kSmall + "--scene default --out " + path("out"));
+  const CommandRun r = run(kSmall + "--scene default --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("glossy L/H pass"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("cube map ("), std::string::npos) << r.err;
 }
 
 TEST_F(VemviewCli, LoneConvexObjectRendersWithoutShadowMaps) {
-  const ViewRun r = run(kSmall + "--scene sphere --out " + path("out"));
+  const CommandRun r = run(kSmall + "--scene sphere --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("no shadow maps (nothing can shadow anything)"), std::string::npos) << r.err;
   const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
@@ -121,7 +121,7 @@ TEST_F(VemviewCli, LightFileFromVemtoolIsRendered) {
       "lights.jsonl",
       R"({"frame":0,"count":2,"lights":[{"id":0,"dir":[0,1,0],"rgb":[3,3,3]},{"id":1,"dir":[0.6,0.8,0],"rgb":[1,1,1]}]})"
       "\n");
-  const ViewRun r =
+  const CommandRun r =
       run(kSmall + "--scene spheres --lights " + path("lights.jsonl") + " --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("light file"), std::string::npos) << r.err;
@@ -129,7 +129,7 @@ TEST_F(VemviewCli, LightFileFromVemtoolIsRendered) {
 }
 
 TEST_F(VemviewCli, ClusteringCutsTheLightsAndShadowsEachCluster) {
-  const ViewRun r = run(" --headless --width 64 --height 48 --count 256 --shadowed 64 --cluster 8 "
+  const CommandRun r = run(" --headless --width 64 --height 48 --count 256 --shadowed 64 --cluster 8 "
                         "--scene spheres --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
@@ -142,7 +142,7 @@ TEST_F(VemviewCli, ClusteringCutsTheLightsAndShadowsEachCluster) {
 }
 
 TEST_F(VemviewCli, AdaptiveCountHalvesTowardAnUnreachableTargetDownToItsFloor) {
-  const ViewRun r = run(" --headless --width 64 --height 48 --count 256 --shadowed 8 "
+  const CommandRun r = run(" --headless --width 64 --height 48 --count 256 --shadowed 8 "
                         "--target-ms 0.001 --orbit 1 --frames 8 --scene spheres --no-png --no-exr "
                         "--out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -158,7 +158,7 @@ TEST_F(VemviewCli, BlackLightFrameRendersBlackWithoutNaN) {
   write("black.jsonl",
         R"({"lights":[{"id":0,"dir":[0,1,0],"rgb":[0,0,0]},{"id":1,"dir":[1,0,0],"rgb":[0,0,0]}]})"
         "\n");
-  const ViewRun r = run(kSmall + "--scene spheres --lights " + path("black.jsonl") + " --out " +
+  const CommandRun r = run(kSmall + "--scene spheres --lights " + path("black.jsonl") + " --out " +
                         path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto exr = vem::render::loadLinearExr(dir_ / "out" / "frame-000000.exr");
@@ -180,7 +180,7 @@ TEST_F(VemviewCli, SunAtTenToTheFiveTimesTheSkyRendersFiniteNonNegativeRadiance)
               "],\"rgb\":[1,1,1]}";
   }
   write("sun.jsonl", lights + "]}\n");
-  const ViewRun r = run(kSmall + "--scene spheres --lights " + path("sun.jsonl") + " --out " +
+  const CommandRun r = run(kSmall + "--scene spheres --lights " + path("sun.jsonl") + " --out " +
                         path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto exr = vem::render::loadLinearExr(dir_ / "out" / "frame-000000.exr");

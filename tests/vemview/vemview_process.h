@@ -1,30 +1,19 @@
 // VemviewProcessTest: the fixture of the tests that run the built vemview (VEMVIEW_PATH) as a
 // user would: a fresh temporary folder per test, removed after it, and run(prefix, args), which
-// runs `PREFIX vemview ARGS` through the shell with stderr captured, returning the exit code (-1
-// when a signal ended it) and stderr.
+// runs `PREFIX vemview ARGS` through the shell with stdout and stderr captured in that folder
+// (support/command_run.h: the exit code, -1 when a signal ended it, and both outputs).
 #pragma once
 
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "support/command_run.h"
+
 namespace vem::testing {
-
-struct ViewRun {
-  int exitCode = -1;
-  std::string err;
-};
-
-inline std::string readTextFile(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 class VemviewProcessTest : public ::testing::Test {
  protected:
@@ -36,12 +25,8 @@ class VemviewProcessTest : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
-  ViewRun run(const std::string& prefix, const std::string& args) const {
-    const std::filesystem::path err = dir_ / "stderr";
-    const std::string command =
-        prefix + std::string(VEMVIEW_PATH) + " " + args + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readTextFile(err)};
+  CommandRun run(const std::string& prefix, const std::string& args) const {
+    return runCommand(prefix + std::string(VEMVIEW_PATH) + " " + args, dir_);
   }
   [[nodiscard]] std::string path(const std::string& name) const { return (dir_ / name).string(); }
 

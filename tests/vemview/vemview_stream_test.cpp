@@ -1,10 +1,7 @@
 // vemview against the real vemd on 127.0.0.1: the lights it draws come from the stream (a moving
 // synthetic sun), each new light frame is drawn with its shadow maps redrawn, and a glossy scene
 // subscribes to the cube maps while a Lambertian one does not.
-#include <sys/wait.h>
-
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -15,11 +12,14 @@
 
 #include "stream_e2e/small_camera.h"
 #include "stream_e2e/vemd_process.h"
+#include "support/command_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
+using vem::testing::CommandRun;
+using vem::testing::runCommand;
 
 class VemviewStream : public ::testing::Test {
  protected:
@@ -46,12 +46,10 @@ class VemviewStream : public ::testing::Test {
     fs::remove_all(dir_);
   }
   int runVemview(const std::string& args) {
-    const std::string command = std::string(VEMVIEW_PATH) + " --connect " + url_ + " " + args +
-                                " 2>" + (dir_ / "stderr").string();
-    const int status = std::system(command.c_str());
-    std::ifstream in(dir_ / "stderr");
-    err_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return WEXITSTATUS(status);
+    const CommandRun r =
+        runCommand(std::string(VEMVIEW_PATH) + " --connect " + url_ + " " + args, dir_);
+    err_ = r.err;
+    return r.exitCode;
   }
 
   fs::path dir_;
@@ -93,14 +91,11 @@ TEST_F(VemviewStream, GlossySceneSubscribesToTheCubeMaps) {
 
 TEST_F(VemviewStream, UnreachableDaemonIsOneSentenceAfterTheTimeout) {
   // Port 1 on loopback: nothing listens, the client keeps retrying until the timeout.
-  const std::string command = std::string(VEMVIEW_PATH) +
-                              " --connect ws://127.0.0.1:1 --headless --timeout 1 --frames 1 2>" +
-                              (dir_ / "stderr").string();
-  const int status = std::system(command.c_str());
-  EXPECT_NE(WEXITSTATUS(status), 0);
-  std::ifstream in(dir_ / "stderr");
-  const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_NE(err.find("no lights arrived within 1 s"), std::string::npos) << err;
+  const CommandRun r = runCommand(
+      std::string(VEMVIEW_PATH) + " --connect ws://127.0.0.1:1 --headless --timeout 1 --frames 1",
+      dir_);
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("no lights arrived within 1 s"), std::string::npos) << r.err;
 }
 
 }  // namespace

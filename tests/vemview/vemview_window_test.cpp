@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using vem::testing::ViewRun;
+using vem::testing::CommandRun;
 
 bool xvfbRunInstalled() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
@@ -35,9 +35,9 @@ class VemviewWindow : public vem::testing::VemviewProcessTest {
  protected:
   // xvfb-run -a picks the first free display number; two runs starting at once can pick the same
   // one, and the loser's Xvfb fails to start: try again then.
-  ViewRun runUnderXvfb(const std::string& args) const {
+  CommandRun runUnderXvfb(const std::string& args) const {
     const std::string prefix = std::string(kTimeout) + "xvfb-run -a -s \"-screen 0 1024x768x24\" ";
-    ViewRun r;
+    CommandRun r;
     for (int attempt = 0; attempt < 3; ++attempt) {
       r = run(prefix, args);
       if (r.err.find("Xvfb failed to start") == std::string::npos) break;
@@ -62,10 +62,10 @@ TEST_F(VemviewWindow, WindowUnderXvfbRendersWhatTheHeadlessRunRenders) {
   if (!xvfbRunInstalled()) {
     GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb)";
   }
-  const ViewRun window = runUnderXvfb(kScene + "--screenshot " + path("shot.png"));
+  const CommandRun window = runUnderXvfb(kScene + "--screenshot " + path("shot.png"));
   ASSERT_EQ(window.exitCode, 0) << window.err;
   EXPECT_NE(window.err.find(", window"), std::string::npos) << window.err;
-  const ViewRun headless = run(kTimeout, kScene + "--headless --out " + path("out"));
+  const CommandRun headless = run(kTimeout, kScene + "--headless --out " + path("out"));
   ASSERT_EQ(headless.exitCode, 0) << headless.err;
 
   // Same camera (no --orbit), lights and tone: frame 0 is drawn, frames 1 and 2 are not redrawn,
@@ -102,7 +102,7 @@ TEST_F(VemviewWindow, WindowUnderXvfbRendersWhatTheHeadlessRunRenders) {
 }
 
 TEST_F(VemviewWindow, WindowWithoutADisplayFailsWithOneSentence) {
-  const ViewRun r = run(std::string(kTimeout) + "env -u DISPLAY -u WAYLAND_DISPLAY ",
+  const CommandRun r = run(std::string(kTimeout) + "env -u DISPLAY -u WAYLAND_DISPLAY ",
                         " --width 64 --height 48 --frames 1 --scene spheres --count 16 "
                         "--shadowed 8");
   EXPECT_NE(r.exitCode, 0) << r.err;
