@@ -39,9 +39,15 @@ bool invisibleControl(char32_t codePoint) {
          (codePoint >= 0x2066 && codePoint <= 0x2069) || codePoint == 0x2028 || codePoint == 0x2029;
 }
 
-void appendHex(std::string& out, const char* format, unsigned value) {
+void appendByte(std::string& out, unsigned byte) {
+  char text[8];
+  std::snprintf(text, sizeof text, "\\x%02x", byte);
+  out += text;
+}
+
+void appendCodePoint(std::string& out, unsigned codePoint) {
   char text[16];
-  std::snprintf(text, sizeof text, format, value);
+  std::snprintf(text, sizeof text, "\\u{%04x}", codePoint);
   out += text;
 }
 
@@ -70,10 +76,10 @@ std::string printable(std::string_view text, std::size_t maxBytes) {
     char32_t codePoint = 0;
     const std::size_t length = byte >= 0x80 ? utf8Sequence(text.substr(i, kept - i), codePoint) : 0;
     if (length == 0) {
-      appendHex(out, "\\x%02x", byte);
+      appendByte(out, byte);
       ++i;
     } else if (invisibleControl(codePoint)) {
-      appendHex(out, "\\u{%04x}", unsigned(codePoint));
+      appendCodePoint(out, unsigned(codePoint));
       i += length;
     } else {
       out.append(text.substr(i, length));
