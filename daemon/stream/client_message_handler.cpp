@@ -8,7 +8,7 @@ namespace vem::stream {
 namespace {
 
 constexpr std::size_t kMaxFilterNameBytes = 64;
-constexpr std::size_t kMaxRecordingNameBytes = 255;
+constexpr std::size_t kMaxRecordingNameBytes = 128;
 
 std::string number(double value) {
   char text[32];
@@ -22,18 +22,6 @@ ReplyAction refuse(std::uint64_t requestId, std::string message) {
   action.reply.set_ok(false);
   action.reply.set_message(std::move(message));
   return action;
-}
-
-// Empty when `name` is a plain file name (or "": a new name).
-std::string recordingNameProblem(const std::string& name) {
-  if (name.size() > kMaxRecordingNameBytes) {
-    return "the recording name must be at most 255 bytes";
-  }
-  if (name == "." || name == ".." || name.find('/') != std::string::npos ||
-      name.find('\0') != std::string::npos) {
-    return "the recording name must be a plain file name (no '/', not \".\" or \"..\")";
-  }
-  return {};
 }
 
 // Empty when the command's values are within the protocol's ranges.
@@ -72,26 +60,64 @@ ClientAction control(const ClientMessage& message, bool authorized) {
   return ControlAction{message.control(), message.request_id()};
 }
 
-ClientAction subscribe(const ClientMessage& message) {
-  SubscriptionResult result = subscriptionFrom(message.subscribe());
+ClientAction subscribe(const ClientMessage& message, bool authorized,
+                       const CubemapBudget& readOnlyBudget) {
+  SubscriptionResult result =
+      subscriptionFrom(message.subscribe(), authorized ? CubemapBudget{} : readOnlyBudget);
   if (!result.problem.empty()) return refuse(message.request_id(), std::move(result.problem));
   return SubscribeAction{result.subscription, message.request_id()};
 }
 
+bool nameCharacter(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
+         c == '_' || c == '-';
+}
+
 }  // namespace
 
-SubscriptionResult subscriptionFrom(const Subscribe& subscribe) {
+std::string recordingNameProblem(const std::string& name) {
+  if (name.empty()) return {};
+  if (name.size() > kMaxRecordingNameBytes) {
+    return "the recording name must be at most 128 bytes";
+  }
+  for (const char c : name) {
+    if (!nameCharacter(c)) {
+      return "the recording name may hold only ASCII letters, digits, '.', '_' and '-'";
+    }
+  }
+  if (name.front() == '.' || name.front() == '-') {
+    return "the recording name must not start with '.' or '-'";
+  }
+  const auto dot = name.rfind('.');
+  if (dot != std::string::npos && name.substr(dot) != ".vem") {
+    return "the recording name must end in \".vem\" or have no extension";
+  }
+  return {};
+}
+
+SubscriptionResult subscriptionFrom(const Subscribe& subscribe, const CubemapBudget& budget) {
   SubscriptionResult result;
   const double rate = subscribe.cubemap_rate_hz();
   if (!std::isfinite(rate) || rate < 0.0 || rate > kMaxCubemapRateHz) {
-    result.problem = "cubemap_rate_hz must be 0 (none) to " + number(kMaxCubemapRateHz) +
-                     ", not " + number(rate);
+    result.problem = "cubemap_rate_hz must be 0 (none) to " + number(kMaxCubemapRateHz) + ", not " +
+                     number(rate);
     return result;
   }
   const std::uint32_t face = subscribe.cubemap_face_px();
   if (face != 0 && (face < std::uint32_t(kMinCubeFacePx) || face > std::uint32_t(kMaxCubeFacePx))) {
     result.problem = "cubemap_face_px must be 0 (64) or " + std::to_string(kMinCubeFacePx) +
                      " to " + std::to_string(kMaxCubeFacePx) + ", not " + std::to_string(face);
+    return result;
+  }
+  if (rate > budget.maxRateHz) {
+    result.problem = "cubemap_rate_hz " + number(rate) + " is over the " +
+                     number(budget.maxRateHz) + " this daemon allows clients without the token";
+    return result;
+  }
+  if (face != 0 && face > std::uint32_t(budget.maxFacePx)) {
+    result.problem = "cubemap_face_px " + std::to_string(face) + " is over the " +
+                     std::to_string(budget.maxFacePx) +
+                     " this daemon allows clients without the token";
     return result;
   }
   const std::uint32_t levels = subscribe.cubemap_levels();
@@ -109,20 +135,22 @@ SubscriptionResult subscriptionFrom(const Subscribe& subscribe) {
   return result;
 }
 
-ClientAction handleClientMessage(std::string_view bytes, bool authorized) {
+ClientAction handleClientMessage(std::string_view bytes, bool authorized,
+                                 const CubemapBudget& readOnlyBudget) {
   ClientMessage message;
   if (bytes.size() > kMaxClientMessageBytes ||
       !message.ParseFromArray(bytes.data(), int(bytes.size()))) {
-    return CloseAction{close_code::kInvalidPayload, "the message is not a vem.stream.ClientMessage"};
+    return CloseAction{close_code::kInvalidPayload,
+                       "the message is not a vem.stream.ClientMessage"};
   }
   if (message.protocol_major() != kProtocolMajor) {
-    return CloseAction{close_code::kProtocolError,
-                       "protocol major version " + std::to_string(message.protocol_major()) +
-                           " is not supported (vemd speaks " + std::to_string(kProtocolMajor) +
-                           ")"};
+    return CloseAction{close_code::kProtocolError, "protocol major version " +
+                                                       std::to_string(message.protocol_major()) +
+                                                       " is not supported (vemd speaks " +
+                                                       std::to_string(kProtocolMajor) + ")"};
   }
   switch (message.body_case()) {
-    case ClientMessage::kSubscribe: return subscribe(message);
+    case ClientMessage::kSubscribe: return subscribe(message, authorized, readOnlyBudget);
     case ClientMessage::kControl: return control(message, authorized);
     case ClientMessage::BODY_NOT_SET: break;
   }

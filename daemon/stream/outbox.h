@@ -7,6 +7,9 @@
 // environment frame and the status; after a light frame, a waiting environment frame or status
 // goes before the next light frame, so a client that barely keeps up still gets them.
 //
+// A server paces a slow reader (client_lag.h) by asking only for replies while it holds the rest:
+// the slots keep being replaced meanwhile, so the client then gets the newest of each.
+//
 // Messages are serialized once and shared by every connection (shared_ptr<const std::string>).
 // Pure; not thread-safe (the server's io thread owns each outbox).
 #pragma once
@@ -36,7 +39,10 @@ class Outbox {
   // The next message to write, taken out of its slot; null when nothing waits.
   [[nodiscard]] SharedBytes next();
 
-  [[nodiscard]] bool empty() const { return replies_.empty() && !lights_ && !environment_ && !status_; }
+  [[nodiscard]] bool hasReply() const { return !replies_.empty(); }
+  [[nodiscard]] bool empty() const {
+    return replies_.empty() && !lights_ && !environment_ && !status_;
+  }
   [[nodiscard]] std::uint64_t skippedLights() const { return skippedLights_; }
   [[nodiscard]] std::uint64_t sentLights() const { return sentLights_; }
 

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "stream/client_message_handler.h"
 #include "stream/frame_encoding.h"
 
 namespace vem::stream {
@@ -31,6 +32,9 @@ std::expected<void, vemd::SinkFailure> RecordingSwitch::close() {
 }
 
 std::expected<std::filesystem::path, std::string> RecordingSwitch::start(const std::string& name) {
+  if (std::string problem = recordingNameProblem(name); !problem.empty()) {
+    return std::unexpected(std::move(problem));
+  }
   if (recorder_) {
     return std::unexpected(
         fmt::format("a recording is already running ({})", recorder_->path().string()));

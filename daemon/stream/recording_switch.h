@@ -4,8 +4,9 @@
 // folder.
 //
 // - start(name) creates FOLDER/name (".vem" added when the name has no extension; an existing
-//   file is refused) or, for "", a new time-stamped file (recordingPathFor); stop() closes it with
-//   its index. Both run on the processing thread between frames (stream_control.h).
+//   file is refused) or, for "", a new time-stamped file (recordingPathFor); a name outside
+//   client_message_handler.h's recordingNameProblem set is refused in one sentence. stop() closes
+//   it with its index. Both run on the processing thread between frames (stream_control.h).
 // - consume() never fails, so the sink set never drops this sink: a write error stops the
 //   recording (the file stays readable, recorder_sink.h) and is handed out once by takeFailure().
 #pragma once

@@ -15,6 +15,14 @@
 
 namespace vem::stream {
 
+// How the server paced one connection (client_lag.h).
+struct ConnectionPacing {
+  std::uint64_t holds = 0;          // times the server held messages because the client was behind
+  bool tooSlow = false;             // closed for reading too slowly
+  std::int64_t minRoundTripNs = 0;  // of the probes (0 before the first pong)
+  std::int64_t maxRoundTripNs = 0;
+};
+
 class Connection {
  public:
   Connection(std::uint64_t id, bool controlAllowed, std::string peer)
@@ -27,6 +35,7 @@ class Connection {
   virtual void wake() = 0;
   // Sends a close frame with `code` and `reason` (after the write in flight), then ends.
   virtual void closeWith(std::uint16_t code, std::string reason) = 0;
+  [[nodiscard]] virtual ConnectionPacing pacing() const = 0;
 
   [[nodiscard]] std::uint64_t id() const { return id_; }
   [[nodiscard]] bool controlAllowed() const { return controlAllowed_; }
@@ -52,6 +61,8 @@ class SessionHost {
   // The connection ended (`why`: one phrase for the log); called once.
   virtual void ended(Connection& connection, const std::string& why) = 0;
   virtual void received(Connection& connection, ClientAction action) = 0;
+  // The connection is being closed for reading too slowly (its close frame is on its way).
+  virtual void tooSlow(Connection& connection, std::int64_t lagMs) = 0;
 
  protected:
   ~SessionHost() = default;

@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/fir_design.h"
+#include "util/printable.h"
 #include "vemd/frame_source.h"
 
 namespace vem::stream {
@@ -51,7 +52,8 @@ void StreamControl::betweenFrames(vemd::Pipeline& pipeline, const vemd::LoopCoun
   }
   if (recorder_ != nullptr) {
     if (auto failure = recorder_->takeFailure()) {
-      spdlog::error("stream: the recording started by a client stopped: {}", *failure);
+      spdlog::error("stream: the recording started by a client stopped: {}",
+                    util::printable(*failure));
     }
   }
   sink_.setStamp({pipeline.filterDelayFrames()});
@@ -85,19 +87,21 @@ std::string StreamControl::apply(vemd::Pipeline& pipeline, const Control& comman
       return fmt::format(
           "there is no filter preset \"{}\" (\"none\", \"paper9\", \"equiripple5\", "
           "\"minphase9\")",
-          command.set_filter());
+          util::printable(command.set_filter()));
     case Control::kStartRecording: {
       if (recorder_ == nullptr) return "this daemon cannot record for clients";
       auto started = recorder_->start(command.start_recording().name());
       if (!started) return started.error();
-      spdlog::info("stream: a client started recording into {}", started->string());
+      spdlog::info("stream: a client started recording into {}",
+                   util::printable(started->string()));
       return {};
     }
     case Control::kStopRecording: {
       if (recorder_ == nullptr) return "no recording is running";
       auto stopped = recorder_->stop();
       if (!stopped) return stopped.error();
-      spdlog::info("stream: a client stopped the recording {}", stopped->string());
+      spdlog::info("stream: a client stopped the recording {}",
+                   util::printable(stopped->string()));
       return {};
     }
     case Control::ACTION_NOT_SET: break;

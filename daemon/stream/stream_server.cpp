@@ -1,5 +1,7 @@
 #include "stream/stream_server.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <atomic>
 #include <map>
@@ -9,33 +11,44 @@
 #include <type_traits>
 #include <utility>
 
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/ssl.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core.hpp>
 #include <boost/beast/http.hpp>
 #include <boost/beast/ssl.hpp>
 #include <boost/beast/websocket.hpp>
 #include <boost/beast/websocket/ssl.hpp>
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include "stream/frame_encoding.h"
 #include "stream/handshake_auth.h"
+#include "stream/handshake_slots.h"
+#include "stream/log_budget.h"
+#include "stream/tls_server_context.h"
+#include "stream/upgrade_request.h"
 #include "stream/websocket_session.h"
+#include "util/printable.h"
 
 namespace vem::stream {
 
 namespace ssl = boost::asio::ssl;
 using tcp = boost::asio::ip::tcp;
-using TlsStream = beast::ssl_stream<beast::tcp_stream>;
 
 namespace {
 
-constexpr std::size_t kMaxHeaderBytes = 8 * 1024;
-// TCP connections beyond the client cap that may still be in their handshake (they get 503).
-constexpr std::size_t kHandshakeSlack = 16;
+// Descriptors kept for everything but client sockets (recordings, cameras, logs, libraries).
+constexpr std::uint64_t kReservedDescriptors = 256;
+constexpr std::uint64_t kMaxDescriptors = 65536;
+// Sockets beyond the clients and handshakes that the server can still answer (refusals).
+constexpr std::size_t kMinRefusalSockets = 16;
+// The log's budget: per kind of event, this many lines per window, then counts.
+constexpr std::int64_t kLogWindowNs = 10'000'000'000;
+constexpr std::uint32_t kLogBurst = 10;
+constexpr std::chrono::milliseconds kAcceptRetry{100};
 
 SharedBytes shared(ServerMessage message) {
   return std::make_shared<const std::string>(serialize(std::move(message)));
@@ -53,27 +66,74 @@ std::string endpointText(const tcp::endpoint& endpoint) {
                          : fmt::format("{}:{}", address.to_string(), endpoint.port());
 }
 
+std::int64_t steadyNowNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+// The soft descriptor limit, raised to the hard one (at most kMaxDescriptors).
+std::uint64_t raiseDescriptorLimit() {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_NOFILE, &limit) != 0) return 1024;
+  const rlim_t wanted = std::min<rlim_t>(limit.rlim_max, kMaxDescriptors);
+  if (limit.rlim_cur < wanted) {
+    rlimit raised = limit;
+    raised.rlim_cur = wanted;
+    if (::setrlimit(RLIMIT_NOFILE, &raised) == 0) limit = raised;
+  }
+  return std::uint64_t(limit.rlim_cur);
+}
+
 }  // namespace
 
-class StreamServer::Impl final : public SessionHost {
+class StreamServer::Impl final : public SessionHost, public UpgradeHost {
  public:
-  explicit Impl(StreamServerOptions options) : options_(std::move(options)) {}
+  explicit Impl(StreamServerOptions options)
+      : options_(std::move(options)),
+        handshakes_(options_.maxHandshakes, options_.maxHandshakesPerAddress) {}
 
   ~Impl() {
     ioc_.stop();
     if (thread_.joinable()) thread_.join();
+    pending_.clear();
     connections_.clear();
+    const ServerCounters c = counters();
+    if (c.accepted + c.refusedFull + c.refusedBusyAddress + c.handshakesTimedOut > 0) {
+      spdlog::info(
+          "stream: served {} clients ({} closed by vemd, {} of them too slow); refused {} (400: "
+          "{}, 401: {}, 503 full: {}, 503 busy address: {}); handshakes: {} timed out, {} failed, "
+          "{} evicted; {} connections closed unanswered",
+          c.accepted, c.closedByServer, c.closedTooSlow,
+          c.refusedBadRequest + c.refusedUnauthorized + c.refusedFull + c.refusedBusyAddress,
+          c.refusedBadRequest, c.refusedUnauthorized, c.refusedFull, c.refusedBusyAddress,
+          c.handshakesTimedOut, c.handshakesFailed, c.handshakesEvicted, c.closedUnanswered);
+    }
   }
 
   std::expected<void, std::string> listen() {
     if (!options_.tlsCertFile.empty() || !options_.tlsKeyFile.empty()) {
-      if (auto loaded = loadTls(); !loaded) return loaded;
+      tls_.emplace(ssl::context::tls_server);
+      if (auto configured = configureServerTls(*tls_, options_.tlsCertFile, options_.tlsKeyFile);
+          !configured) {
+        return configured;
+      }
+    }
+    const std::uint64_t descriptors = raiseDescriptorLimit();
+    socketBudget_ = descriptors > kReservedDescriptors ? descriptors - kReservedDescriptors : 0;
+    const std::uint64_t needed = options_.maxClients + options_.maxHandshakes + kMinRefusalSockets;
+    if (socketBudget_ < needed) {
+      return std::unexpected(fmt::format(
+          "stream.max_clients: {} clients and {} handshakes need {} file descriptors, and vemd "
+          "may open {} (raise LimitNOFILE or ulimit -n, or lower stream.max_clients or "
+          "stream.max_handshakes)",
+          options_.maxClients, options_.maxHandshakes, needed + kReservedDescriptors, descriptors));
     }
     beast::error_code ec;
     const auto address = boost::asio::ip::make_address(options_.address, ec);
     if (ec) {
       return std::unexpected(
-          fmt::format("stream.listen: {} is not an IP address", options_.address));
+          fmt::format("stream.listen: {} is not an IP address", util::printable(options_.address)));
     }
     const tcp::endpoint endpoint(address, options_.port);
     acceptor_.open(endpoint.protocol(), ec);
@@ -86,6 +146,7 @@ class StreamServer::Impl final : public SessionHost {
     }
     boundPort_ = acceptor_.local_endpoint().port();
     accept();
+    scheduleLogReport();
     thread_ = std::thread([this] { ioc_.run(); });
     return {};
   }
@@ -102,8 +163,10 @@ class StreamServer::Impl final : public SessionHost {
 
   void opened(Connection& connection) override {
     ++accepted_;
-    spdlog::info("stream: client {} connected from {}{}", connection.id(), connection.peer(),
-                 connection.controlAllowed() ? " (control allowed)" : "");
+    if (connectedLog_.admit(steadyNowNs())) {
+      spdlog::info("stream: client {} connected from {}{}", connection.id(), connection.peer(),
+                   connection.controlAllowed() ? " (control allowed)" : "");
+    }
     ServerMessage hello;
     *hello.mutable_hello() = options_.hello;
     hello.mutable_hello()->set_control_allowed(connection.controlAllowed());
@@ -113,10 +176,14 @@ class StreamServer::Impl final : public SessionHost {
   }
 
   void ended(Connection& connection, const std::string& why) override {
-    if (connection.open) {
-      spdlog::info("stream: client {} ({}) gone: {}; {} light frames sent, {} skipped",
-                   connection.id(), connection.peer(), why, connection.outbox.sentLights(),
-                   connection.outbox.skippedLights());
+    const ConnectionPacing pacing = connection.pacing();
+    if (connection.open && goneLog_.admit(steadyNowNs())) {
+      spdlog::info(
+          "stream: client {} ({}) gone: {}; {} light frames sent, {} skipped, held {} times "
+          "while behind, probe round trip {:.1f} to {:.1f} ms",
+          connection.id(), connection.peer(), why, connection.outbox.sentLights(),
+          connection.outbox.skippedLights(), pacing.holds, double(pacing.minRoundTripNs) * 1e-6,
+          double(pacing.maxRoundTripNs) * 1e-6);
     }
     if (why.starts_with("closed by vemd") || why.starts_with("a send did not")) ++closedByServer_;
     skippedOfClosed_ += connection.outbox.skippedLights();
@@ -126,6 +193,71 @@ class StreamServer::Impl final : public SessionHost {
 
   void received(Connection& connection, ClientAction action) override {
     std::visit([&](auto& a) { act(connection, a); }, action);
+  }
+
+  void tooSlow(Connection& connection, std::int64_t lagMs) override {
+    ++closedTooSlow_;
+    if (goneLog_.admit(steadyNowNs())) {
+      spdlog::warn("stream: client {} ({}) reads too slowly ({} ms behind); closing it",
+                   connection.id(), connection.peer(), lagMs);
+    }
+  }
+
+  // ---- UpgradeHost (io thread) ----
+  std::chrono::milliseconds handshakeTimeout() const override { return options_.handshakeTimeout; }
+
+  std::optional<Refusal> admit(const http::request<http::string_body>& request,
+                               bool& controlAllowed) override {
+    std::optional<std::string> token = bearerToken(request[http::field::authorization]);
+    if (!token) token = queryToken(request.target());
+    const HandshakeDecision decision =
+        decideHandshake({options_.token, options_.tokenRequiredToConnect}, token);
+    if (!decision.accept) {
+      ++refusedUnauthorized_;
+      return Refusal{401, decision.refusal};
+    }
+    if (connections_.size() >= options_.maxClients) {
+      ++refusedFull_;
+      return Refusal{503, fmt::format("vemd serves at most {} clients", options_.maxClients)};
+    }
+    controlAllowed = decision.controlAllowed;
+    return std::nullopt;
+  }
+
+  void handshakeEnded(std::uint64_t id, HandshakeOutcome outcome, const std::string& peer,
+                      const std::string& detail) override {
+    handshakes_.release(id);
+    pending_.erase(id);
+    handshakesPending_ = handshakes_.pending();
+    const std::int64_t nowNs = steadyNowNs();
+    switch (outcome) {
+      case HandshakeOutcome::Upgraded: return;
+      case HandshakeOutcome::Answered:
+        if (detail.starts_with("400")) ++refusedBadRequest_;
+        if (refusedLog_.admit(nowNs)) spdlog::warn("stream: refused {} ({})", peer, detail);
+        return;
+      case HandshakeOutcome::TimedOut:
+        ++handshakesTimedOut_;
+        if (handshakeLog_.admit(nowNs)) {
+          spdlog::warn("stream: the opening handshake of {} did not end within {} ms ({})", peer,
+                       options_.handshakeTimeout.count(), detail);
+        }
+        return;
+      case HandshakeOutcome::Failed:
+        ++handshakesFailed_;
+        if (handshakeLog_.admit(nowNs)) {
+          spdlog::info("stream: the opening handshake of {} failed: {}", peer, detail);
+        }
+        return;
+      case HandshakeOutcome::Evicted:
+        ++handshakesEvicted_;
+        if (handshakeLog_.admit(nowNs)) {
+          spdlog::warn(
+              "stream: closed the pending handshake of {} to make room: {} handshakes pending",
+              peer, options_.maxHandshakes);
+        }
+        return;
+    }
   }
 
   // ---- any thread ----
@@ -186,10 +318,18 @@ class StreamServer::Impl final : public SessionHost {
   ServerCounters counters() const {
     ServerCounters c;
     c.clients = openClients_.load();
+    c.handshakes = handshakesPending_.load();
     c.accepted = accepted_.load();
+    c.refusedBadRequest = refusedBadRequest_.load();
     c.refusedUnauthorized = refusedUnauthorized_.load();
     c.refusedFull = refusedFull_.load();
+    c.refusedBusyAddress = refusedBusyAddress_.load();
+    c.handshakesTimedOut = handshakesTimedOut_.load();
+    c.handshakesFailed = handshakesFailed_.load();
+    c.handshakesEvicted = handshakesEvicted_.load();
+    c.closedUnanswered = closedUnanswered_.load();
     c.closedByServer = closedByServer_.load();
+    c.closedTooSlow = closedTooSlow_.load();
     c.controlsReceived = controlsReceived_.load();
     c.lightsSkipped = skippedOfClosed_.load() + skippedOfOpen_.load();
     std::lock_guard lock(mailMutex_);
@@ -197,45 +337,131 @@ class StreamServer::Impl final : public SessionHost {
     return c;
   }
 
-  // ---- the handshake (io thread) ----
-  [[nodiscard]] std::optional<std::uint16_t> admit(const http::request<http::string_body>& request,
-                                                   bool& controlAllowed, std::string& body) {
-    std::optional<std::string> token = bearerToken(request[http::field::authorization]);
-    if (!token) token = queryToken(request.target());
-    const HandshakeDecision decision =
-        decideHandshake({options_.token, options_.tokenRequiredToConnect}, token);
-    if (!decision.accept) {
-      ++refusedUnauthorized_;
-      body = decision.refusal;
-      return 401;
+ private:
+  // ---- accepting (io thread) ----
+  void accept() {
+    acceptor_.async_accept(ioc_, [this](beast::error_code ec, tcp::socket socket) {
+      if (ec == boost::asio::error::operation_aborted) return;
+      if (ec) return acceptFailed(ec);
+      onAccepted(std::move(socket));
+      accept();
+    });
+  }
+
+  // Out of descriptors or memory: accepting again at once would spin; wait a moment.
+  void acceptFailed(beast::error_code ec) {
+    ++closedUnanswered_;
+    if (unansweredLog_.admit(steadyNowNs())) {
+      spdlog::warn("stream: cannot accept a connection ({}); trying again in {} ms", ec.message(),
+                   kAcceptRetry.count());
     }
-    if (connections_.size() >= options_.maxClients) {
-      ++refusedFull_;
-      body = fmt::format("vemd serves at most {} clients", options_.maxClients);
-      return 503;
+    acceptRetry_.expires_after(kAcceptRetry);
+    acceptRetry_.async_wait([this](beast::error_code waitError) {
+      if (!waitError) accept();
+    });
+  }
+
+  void onAccepted(tcp::socket socket) {
+    beast::error_code ignored;
+    const tcp::endpoint remote = socket.remote_endpoint(ignored);
+    const std::string peer = endpointText(remote);
+    if (liveSockets_.load() >= socketBudget_) {
+      socket.close(ignored);
+      ++closedUnanswered_;
+      if (unansweredLog_.admit(steadyNowNs())) {
+        spdlog::warn(
+            "stream: closed the connection of {} unanswered: {} sockets are open, all "
+            "that vemd's descriptor limit leaves for clients",
+            peer, socketBudget_);
+      }
+      return;
     }
-    controlAllowed = decision.controlAllowed;
-    return std::nullopt;
+    // No Nagle: a frame's last partial segment would otherwise wait for the client's delayed
+    // ACK (up to 40 ms on Linux); vem_stream_bench measured a 5-10 ms median without this.
+    socket.set_option(tcp::no_delay(true), ignored);
+    // A small kernel send buffer: what the server has handed to a slow client stays small.
+    socket.set_option(boost::asio::socket_base::send_buffer_size(options_.sendBufferBytes),
+                      ignored);
+    const std::uint64_t id = ++nextSocketId_;
+    const std::string address = remote.address().to_string();
+    const HandshakeAdmission admission = handshakes_.admit(address, id);
+    if (admission.evict) evict(*admission.evict);
+    std::optional<Refusal> refusal;
+    if (!admission.admitted) {
+      ++refusedBusyAddress_;
+      refusal = Refusal{503, fmt::format("vemd has {} connections in their opening handshake "
+                                         "from your address, the most it takes; try again",
+                                         options_.maxHandshakesPerAddress)};
+    }
+    if (tls_) {
+      startHandshake(TlsStream(beast::tcp_stream(std::move(socket)), *tls_), id, peer,
+                     std::move(refusal));
+    } else {
+      startHandshake(beast::tcp_stream(std::move(socket)), id, peer, std::move(refusal));
+    }
+    handshakesPending_ = handshakes_.pending();
   }
 
   template <class Stream>
-  void startSession(Stream&& stream, http::request<http::string_body> request, bool controlAllowed,
-                    std::string peer) {
-    auto session = std::make_shared<WebSocketSession<std::decay_t<Stream>>>(
-        std::forward<Stream>(stream), *this, ++nextId_, controlAllowed, std::move(peer));
-    connections_.emplace(session->id(), session);
-    session->run(std::move(request));
+  void startHandshake(Stream stream, std::uint64_t id, const std::string& peer,
+                      std::optional<Refusal> refusal) {
+    auto startSession = [this](Stream&& upgraded, http::request<http::string_body> request,
+                               bool controlAllowed, std::string sessionPeer) {
+      auto session = std::make_shared<WebSocketSession<Stream>>(
+          std::move(upgraded), *this, ++nextId_, controlAllowed, std::move(sessionPeer));
+      connections_.emplace(session->id(), session);
+      session->run(std::move(request));
+    };
+    const bool admitted = !refusal;
+    auto request = std::make_shared<UpgradeRequest<Stream, decltype(startSession)>>(
+        std::move(stream), *this, std::move(startSession), id, socketTicket(), peer,
+        std::move(refusal));
+    if (admitted) pending_.emplace(id, request);
+    request->run();
   }
 
-  // The count of TCP connections alive (in their handshake or open); tickets keep it.
-  std::shared_ptr<void> connectionTicket() {
-    ++tcpConnections_;
-    return std::shared_ptr<void>(nullptr, [this](void*) { --tcpConnections_; });
+  void evict(std::uint64_t id) {
+    const auto it = pending_.find(id);
+    if (it == pending_.end()) return;
+    std::shared_ptr<PendingHandshake> handshake = it->second.lock();
+    pending_.erase(it);
+    if (handshake) handshake->evict();
   }
 
-  ssl::context* tlsContext() { return tls_ ? &*tls_ : nullptr; }
+  // The count of sockets alive (in their handshake, refused, or open); tickets keep it.
+  std::shared_ptr<void> socketTicket() {
+    ++liveSockets_;
+    return std::shared_ptr<void>(nullptr, [this](void*) { --liveSockets_; });
+  }
 
- private:
+  // Once per window: how many events of each kind were not logged one by one.
+  void scheduleLogReport() {
+    logReport_.expires_after(std::chrono::nanoseconds(kLogWindowNs));
+    logReport_.async_wait([this](beast::error_code ec) {
+      if (ec) return;
+      reportSuppressed();
+      scheduleLogReport();
+    });
+  }
+
+  void reportSuppressed() {
+    const std::int64_t nowNs = steadyNowNs();
+    const std::uint64_t connected = connectedLog_.takeSuppressed(nowNs);
+    const std::uint64_t gone = goneLog_.takeSuppressed(nowNs);
+    const std::uint64_t refused = refusedLog_.takeSuppressed(nowNs);
+    const std::uint64_t handshakes = handshakeLog_.takeSuppressed(nowNs);
+    const std::uint64_t unanswered = unansweredLog_.takeSuppressed(nowNs);
+    handshakesPending_ = handshakes_.pending();
+    if (connected + gone + refused + handshakes + unanswered == 0) return;
+    spdlog::warn(
+        "stream: not logged one by one in the last {} s: {} clients connected, {} gone, {} "
+        "refused, {} handshakes that failed, timed out or were evicted, {} connections closed "
+        "unanswered; {} clients and {} handshakes now",
+        kLogWindowNs / 1'000'000'000, connected, gone, refused, handshakes, unanswered,
+        openClients_.load(), handshakes_.pending());
+  }
+
+  // ---- client actions (io thread) ----
   void act(Connection& connection, SubscribeAction& a) {
     connection.subscription = a.subscription;
     updateDemand();
@@ -278,6 +504,7 @@ class StreamServer::Impl final : public SessionHost {
     connection.wake();
   }
 
+  // ---- fan-out (io thread) ----
   void fanOutLights() {
     SharedBytes message;
     std::uint64_t coalesced = 0;
@@ -313,7 +540,7 @@ class StreamServer::Impl final : public SessionHost {
       if (!connection->open || !s.wantsCubemaps()) continue;
       auto it = messages.find(s.cube);
       if (it == messages.end()) continue;
-      // 10 % early is fine: the processing thread builds at the fastest subscriber's pace.
+      // 10 % early is fine: the worker builds at the fastest subscriber's pace.
       const auto period = std::chrono::duration<double>(0.9 / s.cubemapRateHz);
       if (now - connection->lastEnvironment < period) continue;
       connection->lastEnvironment = now;
@@ -354,39 +581,26 @@ class StreamServer::Impl final : public SessionHost {
     demand_ = std::move(demand);
   }
 
-  std::expected<void, std::string> loadTls() {
-    if (options_.tlsCertFile.empty() || options_.tlsKeyFile.empty()) {
-      return std::unexpected(std::string(
-          "stream.tls_cert and stream.tls_key: give both (PEM files) for TLS, or neither"));
-    }
-    tls_.emplace(ssl::context::tls_server);
-    tls_->set_options(ssl::context::default_workarounds | ssl::context::no_sslv2 |
-                      ssl::context::no_sslv3 | ssl::context::no_tlsv1 | ssl::context::no_tlsv1_1);
-    beast::error_code ec;
-    tls_->use_certificate_chain_file(options_.tlsCertFile, ec);
-    if (ec) {
-      return std::unexpected(fmt::format("stream.tls_cert: {}: not a usable PEM certificate ({})",
-                                         options_.tlsCertFile, ec.message()));
-    }
-    tls_->use_private_key_file(options_.tlsKeyFile, ssl::context::pem, ec);
-    if (ec) {
-      return std::unexpected(fmt::format("stream.tls_key: {}: not a usable PEM private key ({})",
-                                         options_.tlsKeyFile, ec.message()));
-    }
-    return {};
-  }
-
-  void accept();
-
   StreamServerOptions options_;
   std::optional<ssl::context> tls_;  // declared before ioc_: outlives the sessions' TLS streams
-  std::atomic<std::size_t> tcpConnections_{0};
+  std::atomic<std::size_t> liveSockets_{0};
+  std::uint64_t socketBudget_ = 0;
+  HandshakeSlots handshakes_;                                         // io thread
+  std::map<std::uint64_t, std::weak_ptr<PendingHandshake>> pending_;  // io thread
   std::map<std::uint64_t, std::shared_ptr<Connection>> connections_;  // io thread
+  LogBudget connectedLog_{kLogWindowNs, kLogBurst};                   // io thread, all five
+  LogBudget goneLog_{kLogWindowNs, kLogBurst};
+  LogBudget refusedLog_{kLogWindowNs, kLogBurst};
+  LogBudget handshakeLog_{kLogWindowNs, kLogBurst};
+  LogBudget unansweredLog_{kLogWindowNs, kLogBurst};
   boost::asio::io_context ioc_{1};
   tcp::acceptor acceptor_{ioc_};
+  boost::asio::steady_timer acceptRetry_{ioc_};
+  boost::asio::steady_timer logReport_{ioc_};
   std::thread thread_;
   std::uint16_t boundPort_ = 0;
   std::uint64_t nextId_ = 0;
+  std::uint64_t nextSocketId_ = 0;
 
   mutable std::mutex mailMutex_;
   SharedBytes lights_;
@@ -404,129 +618,22 @@ class StreamServer::Impl final : public SessionHost {
   std::vector<PendingControl> controls_;
 
   std::atomic<std::size_t> openClients_{0};
+  std::atomic<std::size_t> handshakesPending_{0};
   std::atomic<std::uint64_t> accepted_{0};
+  std::atomic<std::uint64_t> refusedBadRequest_{0};
   std::atomic<std::uint64_t> refusedUnauthorized_{0};
   std::atomic<std::uint64_t> refusedFull_{0};
+  std::atomic<std::uint64_t> refusedBusyAddress_{0};
+  std::atomic<std::uint64_t> handshakesTimedOut_{0};
+  std::atomic<std::uint64_t> handshakesFailed_{0};
+  std::atomic<std::uint64_t> handshakesEvicted_{0};
+  std::atomic<std::uint64_t> closedUnanswered_{0};
   std::atomic<std::uint64_t> closedByServer_{0};
+  std::atomic<std::uint64_t> closedTooSlow_{0};
   std::atomic<std::uint64_t> controlsReceived_{0};
   std::atomic<std::uint64_t> skippedOfClosed_{0};
   std::atomic<std::uint64_t> skippedOfOpen_{0};
 };
-
-namespace {
-
-// One TCP connection until its upgrade request is read and decided: TLS handshake (when TLS is
-// on), the HTTP request, then a WebSocketSession, or a 400/401/503 response and close.
-template <class Stream>
-class UpgradeRequest final : public std::enable_shared_from_this<UpgradeRequest<Stream>> {
- public:
-  UpgradeRequest(Stream stream, StreamServer::Impl& server, std::shared_ptr<void> ticket,
-                 std::string peer)
-      : stream_(std::move(stream)),
-        server_(server),
-        ticket_(std::move(ticket)),
-        peer_(std::move(peer)) {}
-
-  void run() {
-    beast::get_lowest_layer(stream_).expires_after(server_.options().handshakeTimeout);
-    if constexpr (std::is_same_v<Stream, TlsStream>) {
-      stream_.async_handshake(ssl::stream_base::server,
-                              [self = this->shared_from_this()](beast::error_code ec) {
-                                if (ec) {
-                                  spdlog::debug("stream: TLS handshake with {} failed: {}",
-                                                self->peer_, ec.message());
-                                  return;
-                                }
-                                self->read();
-                              });
-    } else {
-      read();
-    }
-  }
-
- private:
-  void read() {
-    parser_.header_limit(kMaxHeaderBytes);
-    parser_.body_limit(kMaxHeaderBytes);
-    http::async_read(stream_, buffer_, parser_,
-                     [self = this->shared_from_this()](beast::error_code ec, std::size_t) {
-                       self->onRead(ec);
-                     });
-  }
-
-  void onRead(beast::error_code ec) {
-    if (ec) return;  // a port scan, a timeout: nothing to answer
-    http::request<http::string_body> request = parser_.release();
-    if (!websocket::is_upgrade(request)) {
-      return respond(http::status::bad_request,
-                     "this is vemd's WebSocket endpoint (proto/vem_stream.proto); connect with a "
-                     "WebSocket client");
-    }
-    bool controlAllowed = false;
-    std::string body;
-    if (auto status = server_.admit(request, controlAllowed, body)) {
-      spdlog::warn("stream: refused {} ({}): {}", peer_, *status, body);
-      return respond(http::status(*status), body);
-    }
-    server_.startSession(std::move(stream_), std::move(request), controlAllowed,
-                         std::move(peer_));
-  }
-
-  void respond(http::status status, const std::string& body) {
-    response_.result(status);
-    response_.version(11);
-    response_.set(http::field::server, "vemd");
-    response_.set(http::field::content_type, "text/plain");
-    if (status == http::status::unauthorized) {
-      response_.set(http::field::www_authenticate, "Bearer realm=\"vemd\"");
-    }
-    response_.keep_alive(false);
-    response_.body() = body + "\n";
-    response_.prepare_payload();
-    http::async_write(stream_, response_,
-                      [self = this->shared_from_this()](beast::error_code, std::size_t) {
-                        beast::error_code ignored;
-                        beast::get_lowest_layer(self->stream_).socket().shutdown(
-                            tcp::socket::shutdown_both, ignored);
-                        beast::get_lowest_layer(self->stream_).close();
-                      });
-  }
-
-  Stream stream_;
-  StreamServer::Impl& server_;
-  std::shared_ptr<void> ticket_;
-  std::string peer_;
-  beast::flat_buffer buffer_;
-  http::request_parser<http::string_body> parser_;
-  http::response<http::string_body> response_;
-};
-
-}  // namespace
-
-void StreamServer::Impl::accept() {
-  acceptor_.async_accept(ioc_, [this](beast::error_code ec, tcp::socket socket) {
-    if (ec == boost::asio::error::operation_aborted) return;
-    if (!ec) {
-      beast::error_code ignored;
-      const std::string peer = endpointText(socket.remote_endpoint(ignored));
-      // No Nagle: a frame's last partial segment would otherwise wait for the client's delayed
-      // ACK (up to 40 ms on Linux); vem_stream_bench measured a 5-10 ms median without this.
-      socket.set_option(tcp::no_delay(true), ignored);
-      if (tcpConnections_.load() >= options_.maxClients + kHandshakeSlack) {
-        socket.close(ignored);  // a flood: not even a 503
-      } else if (tls_) {
-        std::make_shared<UpgradeRequest<TlsStream>>(
-            TlsStream(beast::tcp_stream(std::move(socket)), *tls_), *this, connectionTicket(), peer)
-            ->run();
-      } else {
-        std::make_shared<UpgradeRequest<beast::tcp_stream>>(beast::tcp_stream(std::move(socket)),
-                                                            *this, connectionTicket(), peer)
-            ->run();
-      }
-    }
-    accept();
-  });
-}
 
 std::expected<std::unique_ptr<StreamServer>, std::string> StreamServer::start(
     StreamServerOptions options) {

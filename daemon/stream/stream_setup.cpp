@@ -77,6 +77,12 @@ std::expected<StreamServerOptions, std::string> serverOptions(
   options.tlsKeyFile = config.tlsKey;
   options.maxClients = std::size_t(config.maxClients);
   options.sendTimeout = std::chrono::milliseconds(config.sendTimeoutMs);
+  options.handshakeTimeout = std::chrono::milliseconds(config.handshakeTimeoutMs);
+  options.maxHandshakes = std::size_t(config.maxHandshakes);
+  options.maxHandshakesPerAddress = std::size_t(config.maxHandshakesPerAddress);
+  options.maxClientLag = std::chrono::milliseconds(config.maxClientLagMs);
+  options.sendBufferBytes = int(config.sendBufferBytes);
+  options.cubemapBudget = {int(config.cubemapMaxFacePx), config.cubemapMaxRateHz};
   options.hello.set_server("vemd " VEM_VERSION);
   options.hello.set_source(source.spec);
   options.hello.set_calibration_id(calibrationId(source));

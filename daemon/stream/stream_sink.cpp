@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cassert>
 #include <memory>
-#include <optional>
 #include <utility>
 
-#include "core/cube_map.h"
 #include "stream/frame_encoding.h"
 #include "vemd/frame_source.h"
 #include "vemd/sinks/published_lights.h"
@@ -24,7 +22,10 @@ SharedBytes shared(ServerMessage message) {
 }  // namespace
 
 StreamSink::StreamSink(StreamServer& server, StreamSinkOptions options)
-    : server_(server), options_(options), windowStartNs_(vemd::monotonicNowNs()) {}
+    : server_(server),
+      options_(options),
+      windowStartNs_(vemd::monotonicNowNs()),
+      worker_(server, CubemapWorkerOptions{options.zstdLevel, options.previewWidthPx}) {}
 
 std::expected<void, vemd::SinkFailure> StreamSink::consume(const vemd::ProcessedFrame& frame) {
   assert(frame.captured != nullptr);
@@ -53,23 +54,14 @@ void StreamSink::publishCubemaps(const vemd::ProcessedFrame& frame, std::int64_t
            demand.variants.end();
   });
   if (frame.polar == nullptr) return;
-  std::optional<CubeMap> cube;  // shared by variants that differ only in the preview
-  CubeVariant built{};
+  std::vector<CubeVariant> due;
   for (const VariantDemand& wanted : demand.variants) {
-    auto [due, fresh] = nextCubemapDueNs_.try_emplace(wanted.variant, nowNs);
-    if (nowNs < due->second) continue;
-    due->second = std::max(due->second + std::int64_t(1e9 / wanted.rateHz), nowNs);
-    if (!cube || built.facePx != wanted.variant.facePx || built.levels != wanted.variant.levels) {
-      cube = cubeMapFromEnvMap(*frame.polar, wanted.variant.facePx, wanted.variant.levels);
-      built = wanted.variant;
-      ++cubemapsBuilt_;
-    }
-    ServerMessage message = environmentFrameMessage(*cube, frame.captured->seq,
-                                                    frame.captured->captureTsNs, unixNowNs(),
-                                                    options_.zstdLevel);
-    if (wanted.variant.preview) attachPolarPreview(message, *frame.polar, options_.previewWidthPx);
-    server_.publishEnvironment(wanted.variant, shared(std::move(message)));
+    auto [next, fresh] = nextCubemapDueNs_.try_emplace(wanted.variant, nowNs);
+    if (nowNs < next->second) continue;
+    next->second = std::max(next->second + std::int64_t(1e9 / wanted.rateHz), nowNs);
+    due.push_back(wanted.variant);
   }
+  worker_.offer(*frame.polar, frame.captured->seq, frame.captured->captureTsNs, std::move(due));
 }
 
 SinkWindow StreamSink::takeWindow(std::int64_t nowMonotonicNs) {

@@ -4,9 +4,10 @@
 // - Per frame, the light frame message is built and serialized once (frame_encoding.h: exactly
 //   the lights the JSON-lines sink writes) and handed to the server, which never waits for a
 //   client.
-// - Cube maps are built only while some client subscribed to them: per distinct variant (face
-//   size, levels, preview) at the highest rate asked for it, from the frame's polar map
-//   (core/cube_map.h), with the polar preview when asked.
+// - Cube maps are made only while some client subscribed to them: per distinct variant (face
+//   size, levels, preview) at the highest rate asked for it. This sink only decides which
+//   variants are due in a frame and hands the frame's polar map to the CubemapWorker, which
+//   builds them on its own thread (cubemap_worker.h); the processing thread never builds one.
 // - consume() never fails (a network client cannot fail vemd), so the sink set never drops it and
 //   StreamControl may keep borrowing it.
 // Times: *UnixNs on CLOCK_REALTIME, latency and due times on CLOCK_MONOTONIC.
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "stream/cubemap_worker.h"
 #include "stream/stream_server.h"
 #include "stream/subscription.h"
 #include "vemd/sink.h"
@@ -53,7 +55,11 @@ class StreamSink final : public vemd::Sink {
   [[nodiscard]] SinkWindow takeWindow(std::int64_t nowMonotonicNs);
 
   [[nodiscard]] std::uint64_t framesPublished() const { return framesPublished_; }
-  [[nodiscard]] std::uint64_t cubemapsBuilt() const { return cubemapsBuilt_; }
+  [[nodiscard]] CubemapWorkerCounters cubemapCounters() const { return worker_.counters(); }
+  // Waits until the cube-map worker has built everything offered so far (tests).
+  [[nodiscard]] bool waitForCubemaps(std::int64_t timeoutNs) const {
+    return worker_.waitIdle(timeoutNs);
+  }
   [[nodiscard]] std::uint32_t lightsInLastFrame() const { return lightsInLastFrame_; }
 
  private:
@@ -67,8 +73,8 @@ class StreamSink final : public vemd::Sink {
   std::int64_t windowStartNs_ = 0;
   std::uint64_t windowFrames_ = 0;
   std::uint64_t framesPublished_ = 0;
-  std::uint64_t cubemapsBuilt_ = 0;
   std::uint32_t lightsInLastFrame_ = 0;
+  CubemapWorker worker_;  // last: its thread stops before the rest goes
 };
 
 }  // namespace vem::stream

@@ -21,6 +21,15 @@ struct CubeVariant {
   friend auto operator<=>(const CubeVariant&, const CubeVariant&) = default;
 };
 
+// The most a client without the token may ask for in cube maps ([stream] cubemap_max_face_px and
+// cubemap_max_rate_hz): cube maps cost the daemon CPU time per size and rate, so a read-only
+// client's share is capped. Clients with the token get the protocol's limits.
+struct CubemapBudget {
+  int maxFacePx = kMaxCubeFacePx;
+  double maxRateHz = kMaxCubemapRateHz;
+  friend bool operator==(const CubemapBudget&, const CubemapBudget&) = default;
+};
+
 struct Subscription {
   bool lights = true;
   double cubemapRateHz = 0.0;  // 0: no environment frames

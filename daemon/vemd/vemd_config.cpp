@@ -60,8 +60,15 @@ constexpr std::string_view kOutputKeys[] = {
     "preview_scale"};
 constexpr std::string_view kStatsKeys[] = {"every_s"};
 constexpr std::string_view kStreamKeys[] = {
-    "enabled",   "listen",      "token",           "token_file",        "tls_cert",
-    "tls_key",   "max_clients", "send_timeout_ms", "cubemap_zstd_level", "record_dir"};
+    "enabled",          "listen",
+    "token",            "token_file",
+    "tls_cert",         "tls_key",
+    "max_clients",      "send_timeout_ms",
+    "cubemap_zstd_level", "record_dir",
+    "handshake_timeout_ms", "max_handshakes",
+    "max_handshakes_per_address", "max_client_lag_ms",
+    "send_buffer_bytes", "cubemap_max_face_px",
+    "cubemap_max_rate_hz"};
 constexpr const char* kListenExpected =
     "\"IPV4:PORT\" or \"[IPV6]:PORT\" (an IP address, port 0 to 65535), or \"\" (no server)";
 
@@ -178,6 +185,13 @@ void readStream(TomlSectionReader r, StreamConfig& s) {
   r.wholeNumber("send_timeout_ms", 100, 600'000, s.sendTimeoutMs);
   r.wholeNumber("cubemap_zstd_level", 1, 19, s.cubemapZstdLevel);
   r.text("record_dir", s.recordDir);
+  r.wholeNumber("handshake_timeout_ms", 100, 60'000, s.handshakeTimeoutMs);
+  r.wholeNumber("max_handshakes", 1, 4096, s.maxHandshakes);
+  r.wholeNumber("max_handshakes_per_address", 1, 4096, s.maxHandshakesPerAddress);
+  r.wholeNumber("max_client_lag_ms", 100, 600'000, s.maxClientLagMs);
+  r.wholeNumber("send_buffer_bytes", 4096, 16 * 1024 * 1024, s.sendBufferBytes);
+  r.wholeNumber("cubemap_max_face_px", 64, 512, s.cubemapMaxFacePx);
+  r.number("cubemap_max_rate_hz", 0.0, 60.0, s.cubemapMaxRateHz);
   if (!s.token.empty() && !s.tokenFile.empty()) {
     r.fail("token_file", "stream.token or stream.token_file, not both", "both");
   }

@@ -91,6 +91,13 @@ struct StreamConfig {
   std::int64_t maxClients = 64;
   std::int64_t sendTimeoutMs = 10'000;  // a send pending longer closes that client
   std::int64_t cubemapZstdLevel = 3;
+  std::int64_t handshakeTimeoutMs = 3'000;    // TLS + upgrade request must end within
+  std::int64_t maxHandshakes = 128;           // connections in their handshake at most
+  std::int64_t maxHandshakesPerAddress = 32;  // of those from one address (more: 503)
+  std::int64_t maxClientLagMs = 5'000;        // a client further behind is closed
+  std::int64_t sendBufferBytes = 256 * 1024;  // SO_SNDBUF of each client socket
+  std::int64_t cubemapMaxFacePx = 256;        // for clients without the token
+  double cubemapMaxRateHz = 10.0;             // for clients without the token
   std::string recordDir;  // where control's start_recording writes; "": output.record's folder
                           // (when it is one), else output.dir
   friend bool operator==(const StreamConfig&, const StreamConfig&) = default;

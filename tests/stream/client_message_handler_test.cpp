@@ -91,6 +91,67 @@ TEST(ClientMessageHandler, SubscribeOutOfRangeKeepsTheOldOneAndSaysWhy) {
   }
 }
 
+ClientMessage cubemapSubscribe(std::uint32_t facePx, double rateHz) {
+  ClientMessage m;
+  m.set_request_id(5);
+  m.mutable_subscribe()->set_lights(true);
+  m.mutable_subscribe()->set_cubemap_face_px(facePx);
+  m.mutable_subscribe()->set_cubemap_rate_hz(rateHz);
+  m.mutable_subscribe()->set_cubemap_levels(8);
+  return m;
+}
+
+// Issue 16, item 1: a read-only client asking for 512 px at 60 Hz starved processing.
+TEST(ClientMessageHandler, ReadOnlyClientOverTheCubemapBudgetIsRefusedNamingTheCap) {
+  const CubemapBudget budget{256, 10.0};
+  const ClientAction big = handleClientMessage(bytesOf(cubemapSubscribe(512, 5.0)), false, budget);
+  ASSERT_TRUE(std::holds_alternative<ReplyAction>(big));
+  EXPECT_FALSE(std::get<ReplyAction>(big).reply.ok());
+  EXPECT_EQ(std::get<ReplyAction>(big).reply.message(),
+            "cubemap_face_px 512 is over the 256 this daemon allows clients without the token");
+  const ClientAction often =
+      handleClientMessage(bytesOf(cubemapSubscribe(128, 60.0)), false, budget);
+  ASSERT_TRUE(std::holds_alternative<ReplyAction>(often));
+  EXPECT_EQ(std::get<ReplyAction>(often).reply.message(),
+            "cubemap_rate_hz 60 is over the 10 this daemon allows clients without the token");
+  const ClientAction within =
+      handleClientMessage(bytesOf(cubemapSubscribe(256, 10.0)), false, budget);
+  ASSERT_TRUE(std::holds_alternative<SubscribeAction>(within));
+  EXPECT_EQ(std::get<SubscribeAction>(within).subscription.cube.facePx, 256);
+}
+
+TEST(ClientMessageHandler, ClientWithTheTokenMayAskForTheProtocolsLimits) {
+  const CubemapBudget budget{256, 10.0};
+  const ClientAction action =
+      handleClientMessage(bytesOf(cubemapSubscribe(512, 60.0)), true, budget);
+  ASSERT_TRUE(std::holds_alternative<SubscribeAction>(action));
+  EXPECT_EQ(std::get<SubscribeAction>(action).subscription.cube.facePx, 512);
+  EXPECT_DOUBLE_EQ(std::get<SubscribeAction>(action).subscription.cubemapRateHz, 60.0);
+}
+
+// Issue 16, item 6: this name forged a log line and made a file with a newline in its name.
+TEST(ClientMessageHandler, RecordingNameWithANewlineIsRefusedBeforeItReachesTheRecorder) {
+  ClientMessage m;
+  m.set_request_id(9);
+  m.mutable_control()->mutable_start_recording()->set_name("evil\nvemd info: FAKE LINE.vem");
+  const ClientAction action = handleClientMessage(bytesOf(m), true);
+  ASSERT_TRUE(std::holds_alternative<ReplyAction>(action));
+  EXPECT_EQ(std::get<ReplyAction>(action).reply.message(),
+            "the recording name may hold only ASCII letters, digits, '.', '_' and '-'");
+}
+
+TEST(ClientMessageHandler, RecordingNamesOutsideTheStatedSetAreRefused) {
+  for (const char* bad : {"a b.vem", "../x.vem", "x/y", ".hidden.vem", "-rf.vem", "take.txt",
+                          "caf\xc3\xa9.vem", "tab\there", "nul\x01"}) {
+    EXPECT_NE(recordingNameProblem(bad), "") << bad;
+  }
+  EXPECT_NE(recordingNameProblem(std::string(129, 'a')), "");
+  for (const char* good : {"", "take-1", "take_2.vem", "Stage.B.2026-12-03.vem", "x"}) {
+    EXPECT_EQ(recordingNameProblem(good), "") << good;
+  }
+  EXPECT_EQ(recordingNameProblem(std::string(128, 'a')), "");
+}
+
 TEST(ClientMessageHandler, EmptyBodyIsAnsweredNotClosed) {
   ClientMessage m;
   m.set_request_id(3);

@@ -110,6 +110,34 @@ TEST_F(TokenFile, ServerOptionsTakeTheFilesTokenAndRequireItBeyondLoopback) {
   EXPECT_FALSE(serverOptions(config, {})->tokenRequiredToConnect);
 }
 
+// Issue 16: the limits that keep clients from slowing vemd are settings, and reach the server.
+TEST(StreamConfig, HardeningKeysReachTheServerOptions) {
+  auto config = vemd::parseConfig(
+      "[stream]\nhandshake_timeout_ms = 750\nmax_handshakes = 40\nmax_handshakes_per_address = 5\n"
+      "max_client_lag_ms = 2500\nsend_buffer_bytes = 65536\ncubemap_max_face_px = 128\n"
+      "cubemap_max_rate_hz = 2.5\n",
+      "vemd.toml");
+  ASSERT_TRUE(config.has_value()) << config.error();
+  auto options = serverOptions(config->stream, {});
+  ASSERT_TRUE(options.has_value()) << options.error();
+  EXPECT_EQ(options->handshakeTimeout, std::chrono::milliseconds(750));
+  EXPECT_EQ(options->maxHandshakes, 40u);
+  EXPECT_EQ(options->maxHandshakesPerAddress, 5u);
+  EXPECT_EQ(options->maxClientLag, std::chrono::milliseconds(2500));
+  EXPECT_EQ(options->sendBufferBytes, 65536);
+  EXPECT_EQ(options->cubemapBudget, (CubemapBudget{128, 2.5}));
+}
+
+TEST(StreamConfig, HardeningKeysOutOfRangeAreRefusedInOneSentence) {
+  EXPECT_EQ(refusal("[stream]\ncubemap_max_face_px = 1024\n"),
+            "vemd.toml: stream.cubemap_max_face_px: expected a whole number from 64 to 512, found "
+            "1024");
+  EXPECT_NE(refusal("[stream]\nhandshake_timeout_ms = 0\n"), "accepted");
+  EXPECT_NE(refusal("[stream]\nmax_handshakes_per_address = 0\n"), "accepted");
+  EXPECT_NE(refusal("[stream]\ncubemap_max_rate_hz = 61\n"), "accepted");
+  EXPECT_NE(refusal("[stream]\nsend_buffer_bytes = 100\n"), "accepted");
+}
+
 TEST(StreamConfig, MissingTlsFilesFailAtStart) {
   StreamServerOptions options;
   options.port = 0;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <spdlog/spdlog.h>
@@ -28,6 +29,8 @@ using testing::WsTestClient;
 namespace fs = std::filesystem;
 
 using testing::eventually;
+
+constexpr std::int64_t kWaitNs = 60'000'000'000;  // a hang guard, not a speed limit
 
 class StreamProcessing : public ::testing::Test {
  protected:
@@ -91,13 +94,16 @@ TEST_F(StreamProcessing, CubemapsAreBuiltOnlyWhileSomeoneSubscribes) {
   WsTestClient lightsOnly;
   ASSERT_EQ(lightsOnly.connect(server_->boundPort()), 0);
   for (std::uint64_t seq = 0; seq < 5; ++seq) feed(seq);
-  EXPECT_EQ(sink_->cubemapsBuilt(), 0u);
+  ASSERT_TRUE(sink_->waitForCubemaps(kWaitNs));
+  EXPECT_EQ(sink_->cubemapCounters().framesOffered, 0u);
+  EXPECT_EQ(sink_->cubemapCounters().cubesBuilt, 0u);
 
   WsTestClient subscriber;
   ASSERT_EQ(subscriber.connect(server_->boundPort()), 0);
   subscribeCubemaps(subscriber, 60.0);
   feed(5);
-  EXPECT_EQ(sink_->cubemapsBuilt(), 1u);
+  ASSERT_TRUE(sink_->waitForCubemaps(kWaitNs));
+  EXPECT_EQ(sink_->cubemapCounters().cubesBuilt, 1u);
   bool gotEnvironment = false;
   while (!gotEnvironment) {
     auto message = subscriber.read();
@@ -111,9 +117,9 @@ TEST_F(StreamProcessing, CubemapsAreBuiltOnlyWhileSomeoneSubscribes) {
 
   subscriber.close();
   ASSERT_TRUE(eventually([&] { return !server_->cubemapDemand().any(); }));
-  const std::uint64_t built = sink_->cubemapsBuilt();
+  const std::uint64_t offered = sink_->cubemapCounters().framesOffered;
   for (std::uint64_t seq = 6; seq < 12; ++seq) feed(seq);
-  EXPECT_EQ(sink_->cubemapsBuilt(), built);
+  EXPECT_EQ(sink_->cubemapCounters().framesOffered, offered);
 }
 
 TEST_F(StreamProcessing, CubemapsFollowTheRateAskedNotTheFrameRate) {
@@ -121,7 +127,77 @@ TEST_F(StreamProcessing, CubemapsFollowTheRateAskedNotTheFrameRate) {
   ASSERT_EQ(subscriber.connect(server_->boundPort()), 0);
   subscribeCubemaps(subscriber, 0.001);  // one every 1000 s: the first is due at once
   for (std::uint64_t seq = 0; seq < 10; ++seq) feed(seq);
-  EXPECT_EQ(sink_->cubemapsBuilt(), 1u);
+  ASSERT_TRUE(sink_->waitForCubemaps(kWaitNs));
+  EXPECT_EQ(sink_->cubemapCounters().framesOffered, 1u);
+  EXPECT_EQ(sink_->cubemapCounters().cubesBuilt, 1u);
+}
+
+// Issue 16, item 1: each client's size was built once per client, on the processing thread.
+TEST_F(StreamProcessing, EachFaceSizeIsBuiltOncePerFrameWhoeverAsksForIt) {
+  std::vector<WsTestClient> clients(4);
+  for (auto& c : clients) ASSERT_EQ(c.connect(server_->boundPort(), "/", "secret"), 0);
+  const auto subscribe = [](WsTestClient& client, int levels, bool preview) {
+    ClientMessage message;
+    message.mutable_subscribe()->set_lights(true);
+    message.mutable_subscribe()->set_cubemap_rate_hz(60.0);
+    message.mutable_subscribe()->set_cubemap_face_px(32);
+    message.mutable_subscribe()->set_cubemap_levels(std::uint32_t(levels));
+    message.mutable_subscribe()->set_preview(preview);
+    ASSERT_TRUE(client.send(message));
+    auto reply = client.nextReply();
+    ASSERT_TRUE(reply && reply->ok());
+  };
+  subscribe(clients[0], 1, false);
+  subscribe(clients[1], 1, false);  // the same variant as the first
+  subscribe(clients[2], 4, false);
+  subscribe(clients[3], 4, true);
+  ASSERT_EQ(server_->cubemapDemand().variants.size(), 3u);
+  feed(1);
+  ASSERT_TRUE(sink_->waitForCubemaps(kWaitNs));
+  const CubemapWorkerCounters counters = sink_->cubemapCounters();
+  EXPECT_EQ(counters.cubesBuilt, 1u);          // one 32 px cube with 4 levels
+  EXPECT_EQ(counters.messagesPublished, 3u);   // one per variant
+  for (std::size_t i = 0; i < clients.size(); ++i) {
+    for (;;) {
+      auto message = clients[i].read();
+      ASSERT_TRUE(message);
+      if (!message->has_environment()) continue;
+      EXPECT_EQ(message->environment().levels(), i < 2 ? 1u : 4u) << "client " << i;
+      EXPECT_EQ(message->environment().has_preview(), i == 3) << "client " << i;
+      break;
+    }
+  }
+}
+
+// Issue 16, item 1: the builder falls behind a client that asks for big cube maps often; it
+// drops the maps it could not take and builds the newest, and the processing thread never waits.
+TEST_F(StreamProcessing, TheCubemapWorkerBuildsTheNewestMapWhenItFallsBehind) {
+  WsTestClient subscriber;
+  ASSERT_EQ(subscriber.connect(server_->boundPort(), "/", "secret"), 0);
+  ClientMessage message;
+  message.mutable_subscribe()->set_lights(false);
+  message.mutable_subscribe()->set_cubemap_rate_hz(60.0);
+  message.mutable_subscribe()->set_cubemap_face_px(512);
+  message.mutable_subscribe()->set_cubemap_levels(8);
+  ASSERT_TRUE(subscriber.send(message));
+  auto reply = subscriber.nextReply();
+  ASSERT_TRUE(reply && reply->ok());
+  // Frames 100 ms of capture time apart, fed as fast as the pipeline goes: every one is due.
+  constexpr std::uint64_t kFrames = 12;
+  for (std::uint64_t seq = 0; seq < kFrames; ++seq) {
+    feed(seq);
+    std::this_thread::sleep_for(std::chrono::milliseconds(17));  // a 60 Hz camera
+  }
+  ASSERT_TRUE(sink_->waitForCubemaps(kWaitNs));
+  const CubemapWorkerCounters counters = sink_->cubemapCounters();
+  EXPECT_EQ(counters.framesBuilt + counters.framesDropped, counters.framesOffered);
+  EXPECT_EQ(counters.cubesBuilt, counters.framesBuilt);
+  std::uint64_t lastSeq = 0;
+  while (lastSeq != kFrames - 1) {
+    auto received = subscriber.read();
+    ASSERT_TRUE(received);
+    if (received->has_environment()) lastSeq = received->environment().seq();
+  }
 }
 
 vemd::LoopCounters someCounters() {

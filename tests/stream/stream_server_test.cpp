@@ -78,6 +78,7 @@ TEST(StreamServer, ClientThatNeverReadsDoesNotStopTheOthers) {
   StreamServerOptions options;
   options.sendTimeout = std::chrono::minutes(10);  // keep the stuck client for this test
   options.idleTimeout = std::chrono::minutes(10);
+  options.maxClientLag = std::chrono::minutes(10);
   auto server = startServer(options);
   WsTestClient stuck;  // connects, then never reads
   ASSERT_EQ(stuck.connect(server->boundPort()), 0);
@@ -100,6 +101,7 @@ TEST(StreamServer, ClientThatNeverReadsDoesNotStopTheOthers) {
 TEST(StreamServer, SendTimeoutClosesAClientThatStoppedReading) {
   StreamServerOptions options;
   options.sendTimeout = std::chrono::milliseconds(200);
+  options.maxClientLag = std::chrono::minutes(10);  // the send timeout, not the lag, closes it
   auto server = startServer(options);
   WsTestClient stuck, reader;
   ASSERT_EQ(stuck.connect(server->boundPort()), 0);

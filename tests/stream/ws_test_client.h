@@ -33,9 +33,17 @@ class WsTestClient {
  public:
   // 0 when upgraded and the Hello read (the server then counts this client as open), else the
   // HTTP status of the refusal (-1: no answer, or no Hello first).
+  // `source`: the local address to connect from (another loopback address, 127.0.0.2, makes the
+  // server see another client host).
   int connect(std::uint16_t port, const std::string& target = "/",
-              const std::optional<std::string>& bearer = std::nullopt) {
+              const std::optional<std::string>& bearer = std::nullopt,
+              const std::string& source = "") {
     beast::error_code ec;
+    if (!source.empty()) {
+      ws_.next_layer().open(asio::ip::tcp::v4(), ec);
+      if (!ec) ws_.next_layer().bind({asio::ip::make_address(source), 0}, ec);
+      if (ec) return -1;
+    }
     ws_.next_layer().connect({asio::ip::make_address("127.0.0.1"), port}, ec);
     if (ec) return -1;
     if (bearer) {
