@@ -54,9 +54,10 @@ std::expected<Lobe, std::string> highlightLobe(const tinyobj::material_t& mtl) {
   value = value.substr(0, value.find_last_not_of(" \t\r") + 1);
   if (value == "blinn") return Lobe::Blinn;
   if (value == "phong") return Lobe::Phong;
-  return std::unexpected(fmt::format("material '{}' has vem_lobe '{}', where phong or blinn was "
-                                     "expected",
-                                     mtl.name, value));
+  return std::unexpected(
+      fmt::format("material '{}' has vem_lobe '{}', where phong or blinn was "
+                  "expected",
+                  mtl.name, value));
 }
 
 std::expected<Material, std::string> fromMtl(const tinyobj::material_t& mtl, Warnings& warnings) {
@@ -68,9 +69,10 @@ std::expected<Material, std::string> fromMtl(const tinyobj::material_t& mtl, War
   m.diffuseAlbedo = kd;
   if (mtl.roughness > 0) {
     if (namesLobe) {
-      return std::unexpected(fmt::format("material '{}' has both Pr (a GGX lobe) and vem_lobe, "
-                                         "where one of them was expected",
-                                         mtl.name));
+      return std::unexpected(
+          fmt::format("material '{}' has both Pr (a GGX lobe) and vem_lobe, "
+                      "where one of them was expected",
+                      mtl.name));
     }
     const float metallic = std::clamp(static_cast<float>(mtl.metallic), 0.0F, 1.0F);
     m.lobe = Lobe::Ggx;

@@ -13,7 +13,8 @@ namespace vem::view {
 namespace {
 
 double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 class GlFrameRenderer final : public FrameRenderer {
@@ -85,8 +86,8 @@ class GlFrameRenderer final : public FrameRenderer {
     if (lastDisplay_.empty()) {
       return;
     }
-    if (auto saved = render::saveSrgbPng(lastDisplay_, renderer_->widthPx(),
-                                         renderer_->heightPx(), options_.screenshot);
+    if (auto saved = render::saveSrgbPng(lastDisplay_, renderer_->widthPx(), renderer_->heightPx(),
+                                         options_.screenshot);
         !saved) {
       fmt::print(stderr, "vemview: error: {}\n", saved.error());
     }

@@ -14,7 +14,8 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
   const bool wanted = plan.glossyPass || request.backgroundWanted;
   plan.cubeMap = wanted && request.inputHasCubeMaps;
   plan.cubeMapReason = !request.inputHasCubeMaps && wanted ? "the input carries none"
-                       : plan.glossyPass ? (mirror ? "mirror-like reflections" : "glossy reflections")
+                       : plan.glossyPass
+                           ? (mirror ? "mirror-like reflections" : "glossy reflections")
                        : request.backgroundWanted ? "background asked for"
                                                   : "no glossy material";
   const bool canShadow = scene::canCastShadows(scene);
@@ -24,9 +25,9 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
                                                    : "the scene can shadow itself";
   plan.lighting.lightCount = std::max<std::size_t>(request.lightCount, 1);
   plan.lighting.shadowedCount =
-      plan.shadowMaps
-          ? std::min<std::size_t>({request.shadowedCount, render::kMaxShadowMaps, plan.lighting.lightCount})
-          : 0;
+      plan.shadowMaps ? std::min<std::size_t>({request.shadowedCount, render::kMaxShadowMaps,
+                                               plan.lighting.lightCount})
+                      : 0;
   plan.lighting.regions = request.regions;
   plan.lighting.glossyPass = plan.glossyPass;
   plan.lighting.clusterBudget = request.inputClustered ? 0 : request.clusterBudget;

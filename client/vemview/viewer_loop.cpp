@@ -102,11 +102,11 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
                      frame->seq == v.lastDrawn->inputSeq;
   if (!frame || stale) {
     const std::string why = v.input->failure();
-    return std::unexpected(why.empty() ? fmt::format("{}: no {}lights arrived within {} s",
-                                                     v.input->facts().description,
-                                                     stale ? "new " : "",
-                                                     v.options.streamTimeoutSec)
-                                       : why);
+    return std::unexpected(why.empty()
+                               ? fmt::format("{}: no {}lights arrived within {} s",
+                                             v.input->facts().description, stale ? "new " : "",
+                                             v.options.streamTimeoutSec)
+                               : why);
   }
   const float drag = v.renderer->takeOrbitDragRad();
   const bool orbiting = v.options.orbitDegPerFrame != 0.0 && frameIndex > 0;

@@ -176,8 +176,8 @@ TEST(ObjLoaderRefuses, AMissingFileAsNotFound) {
 TEST(ObjLoaderRefuses, AVemLobeThatIsNeitherPhongNorBlinn) {
   TempDir dir;
   dir.write("m.mtl", "newmtl odd\nKd 0.2 0.2 0.2\nKs 0.3 0.3 0.3\nNs 80\nvem_lobe ward\n");
-  const auto failure = refusal(dir.write(
-      "tri.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl odd\nf 1 2 3\n"));
+  const auto failure = refusal(
+      dir.write("tri.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl odd\nf 1 2 3\n"));
   EXPECT_EQ(failure.error, SceneFileError::BadContents);
   EXPECT_THAT(failure.message,
               HasSubstr("material 'odd' has vem_lobe 'ward', where phong or blinn was expected"));
@@ -186,8 +186,8 @@ TEST(ObjLoaderRefuses, AVemLobeThatIsNeitherPhongNorBlinn) {
 TEST(ObjLoaderRefuses, AVemLobeBesidePr) {
   TempDir dir;
   dir.write("m.mtl", "newmtl both\nKd 0.2 0.2 0.2\nPr 0.3\nvem_lobe phong\n");
-  const auto failure = refusal(dir.write(
-      "tri.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl both\nf 1 2 3\n"));
+  const auto failure = refusal(
+      dir.write("tri.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl both\nf 1 2 3\n"));
   EXPECT_EQ(failure.error, SceneFileError::BadContents);
   EXPECT_THAT(failure.message, HasSubstr("has both Pr (a GGX lobe) and vem_lobe"));
 }

@@ -129,8 +129,10 @@ TEST_F(VemviewCli, LightFileFromVemtoolIsRendered) {
 }
 
 TEST_F(VemviewCli, ClusteringCutsTheLightsAndShadowsEachCluster) {
-  const CommandRun r = run(" --headless --width 64 --height 48 --count 256 --shadowed 64 --cluster 8 "
-                        "--scene spheres --out " + path("out"));
+  const CommandRun r =
+      run(" --headless --width 64 --height 48 --count 256 --shadowed 64 --cluster 8 "
+          "--scene spheres --out " +
+          path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
   ASSERT_EQ(lines.size(), 1U);
@@ -142,9 +144,11 @@ TEST_F(VemviewCli, ClusteringCutsTheLightsAndShadowsEachCluster) {
 }
 
 TEST_F(VemviewCli, AdaptiveCountHalvesTowardAnUnreachableTargetDownToItsFloor) {
-  const CommandRun r = run(" --headless --width 64 --height 48 --count 256 --shadowed 8 "
-                        "--target-ms 0.001 --orbit 1 --frames 8 --scene spheres --no-png --no-exr "
-                        "--out " + path("out"));
+  const CommandRun r =
+      run(" --headless --width 64 --height 48 --count 256 --shadowed 8 "
+          "--target-ms 0.001 --orbit 1 --frames 8 --scene spheres --no-png --no-exr "
+          "--out " +
+          path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
   ASSERT_EQ(lines.size(), 8U);
@@ -158,8 +162,8 @@ TEST_F(VemviewCli, BlackLightFrameRendersBlackWithoutNaN) {
   write("black.jsonl",
         R"({"lights":[{"id":0,"dir":[0,1,0],"rgb":[0,0,0]},{"id":1,"dir":[1,0,0],"rgb":[0,0,0]}]})"
         "\n");
-  const CommandRun r = run(kSmall + "--scene spheres --lights " + path("black.jsonl") + " --out " +
-                        path("out"));
+  const CommandRun r =
+      run(kSmall + "--scene spheres --lights " + path("black.jsonl") + " --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto exr = vem::render::loadLinearExr(dir_ / "out" / "frame-000000.exr");
   ASSERT_TRUE(exr.has_value()) << exr.error();
@@ -180,8 +184,8 @@ TEST_F(VemviewCli, SunAtTenToTheFiveTimesTheSkyRendersFiniteNonNegativeRadiance)
               "],\"rgb\":[1,1,1]}";
   }
   write("sun.jsonl", lights + "]}\n");
-  const CommandRun r = run(kSmall + "--scene spheres --lights " + path("sun.jsonl") + " --out " +
-                        path("out"));
+  const CommandRun r =
+      run(kSmall + "--scene spheres --lights " + path("sun.jsonl") + " --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto exr = vem::render::loadLinearExr(dir_ / "out" / "frame-000000.exr");
   ASSERT_TRUE(exr.has_value()) << exr.error();
