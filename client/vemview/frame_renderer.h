@@ -8,8 +8,10 @@
 // Times in ms, measured on the CPU's steady clock around work that has finished (GL: glFinish).
 #pragma once
 
+#include <cstddef>
 #include <expected>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -44,6 +46,11 @@ class FrameRenderer {
   [[nodiscard]] virtual bool open() { return true; }
   // Mouse-drag orbit since the last call, radians (windows only).
   [[nodiscard]] virtual float takeOrbitDragRad() { return 0.0F; }
+  // How many shadow maps it can hold (the GL atlas is bounded by GL_MAX_TEXTURE_SIZE); nothing
+  // when unbounded (ray-traced shadows).
+  [[nodiscard]] virtual std::optional<std::size_t> shadowMapCapacity() const {
+    return std::nullopt;
+  }
 };
 
 [[nodiscard]] std::expected<std::unique_ptr<FrameRenderer>, std::string> makeFrameRenderer(

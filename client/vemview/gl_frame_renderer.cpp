@@ -74,6 +74,10 @@ class GlFrameRenderer final : public FrameRenderer {
 
   bool open() override { return !context_->shouldClose(); }
 
+  std::optional<std::size_t> shadowMapCapacity() const override {
+    return renderer_->shadowMapCapacity();
+  }
+
   // A drag across the whole window turns the camera half way round; dragging to the right turns
   // the scene to the right (the camera to its left, azimuth up).
   float takeOrbitDragRad() override {

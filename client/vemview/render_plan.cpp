@@ -37,6 +37,14 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
   return plan;
 }
 
+RenderPlan withShadowMapCapacity(RenderPlan plan, std::size_t capacity) {
+  if (plan.lighting.shadowedCount > capacity) {
+    plan.shadowedAskedFor = plan.lighting.shadowedCount;
+    plan.lighting.shadowedCount = capacity;
+  }
+  return plan;
+}
+
 std::string RenderPlan::describe() const {
   std::string text = fmt::format("lights {}", lighting.lightCount);
   if (targetFrameMs) {
@@ -44,6 +52,10 @@ std::string RenderPlan::describe() const {
   }
   text += shadowMaps ? fmt::format(", shadow maps {} at {} px", lighting.shadowedCount, shadowMapPx)
                      : fmt::format(", no shadow maps ({})", shadowReason);
+  if (shadowMaps && shadowedAskedFor > 0) {
+    text += fmt::format(" ({} asked for; the atlas holds {})", shadowedAskedFor,
+                        lighting.shadowedCount);
+  }
   text += lighting.regions ? ", regions on" : ", regions off";
   text += glossyPass
               ? fmt::format(", glossy L/H pass (|H| {}; {})", lighting.highCount, glossyReason)

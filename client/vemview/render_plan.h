@@ -8,7 +8,8 @@
 // - cubeMap: the environment cube map (subscribed from the stream, or made from the map file) only
 //   when some material is glossy (reflections) or the user asked for it as the background.
 // - shadowMaps: shadowedCount > 0 only when some surface can hide a light from another
-//   (scene::canCastShadows); the atlas is not even allocated otherwise.
+//   (scene::canCastShadows); the atlas is not even allocated otherwise. Once the renderer exists,
+//   shadowedCount is cut to what its atlas holds (withShadowMapCapacity).
 // Per frame (decideFrame):
 // - lights unchanged since the last drawn frame (same input seq): shadow maps are reused;
 // - lights, camera and scene all unchanged: nothing is redrawn (the last image stands).
@@ -47,11 +48,17 @@ struct RenderPlan {
   std::string glossyReason;  // why, in a few words
   std::string cubeMapReason;
   std::string shadowReason;
+  std::size_t shadowedAskedFor = 0;  // S asked for, when the renderer holds fewer maps; else 0
 
   [[nodiscard]] std::string describe() const;  // one line for the start and the status line
 };
 
 [[nodiscard]] RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request);
+
+// The plan for a renderer that holds at most `capacity` shadow maps (the OpenGL atlas is bounded
+// by GL_MAX_TEXTURE_SIZE): S becomes min(S, capacity), so the lights without a map of their own
+// take their nearest caster's, and what is reported as shadowed is what is shadowed.
+[[nodiscard]] RenderPlan withShadowMapCapacity(RenderPlan plan, std::size_t capacity);
 
 struct FrameState {
   std::uint64_t inputSeq = 0;

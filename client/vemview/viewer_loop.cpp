@@ -192,13 +192,16 @@ int runViewer(const ViewerOptions& options) {
   Viewer v(options, std::move(plan), std::move(*input), cameraFor(*scene, options));
   fmt::print(stderr, "vemview: scene {} ({} meshes, {} triangles), input {}\n", scene->name,
              scene->meshes.size(), scene::triangleCount(*scene), v.input->facts().description);
-  fmt::print(stderr, "vemview: plan: {}\n", v.plan.describe());
   auto renderer = makeFrameRenderer(options, v.plan, *scene, v.geometry);
   if (!renderer) {
     spdlog::error("{}", renderer.error());
     return EXIT_FAILURE;
   }
   v.renderer = std::move(*renderer);
+  if (const auto capacity = v.renderer->shadowMapCapacity()) {
+    v.plan = withShadowMapCapacity(std::move(v.plan), *capacity);  // what the atlas really holds
+  }
+  fmt::print(stderr, "vemview: plan: {}\n", v.plan.describe());
   fmt::print(stderr, "vemview: renderer {}\n", v.renderer->name());
   v.writer = std::move(writer);
   if (v.plan.targetFrameMs) {

@@ -65,6 +65,28 @@ TEST(RenderPlan, SphereAbovePlaneGetsTheShadowMapsAskedFor) {
   EXPECT_EQ(plan.lighting.shadowedCount, 32U);
 }
 
+TEST(RenderPlan, ShadowMapsPastTheAtlasCapacityAreCutAndSaidSo) {
+  PlanRequest request;
+  request.lightCount = 256;
+  request.shadowedCount = 256;
+  request.shadowMapPx = 4096;
+  const RenderPlan plan =
+      withShadowMapCapacity(planFor(sphereOnPlane(scene::Material{}), request), 16);
+  EXPECT_EQ(plan.lighting.shadowedCount, 16U);
+  EXPECT_NE(plan.describe().find("shadow maps 16 at 4096 px (256 asked for; the atlas holds 16)"),
+            std::string::npos)
+      << plan.describe();
+}
+
+TEST(RenderPlan, ShadowMapsWithinTheAtlasCapacityAreKept) {
+  PlanRequest request;
+  request.shadowedCount = 8;
+  const RenderPlan plan =
+      withShadowMapCapacity(planFor(sphereOnPlane(scene::Material{}), request), 16);
+  EXPECT_EQ(plan.lighting.shadowedCount, 8U);
+  EXPECT_EQ(plan.describe().find("asked for"), std::string::npos) << plan.describe();
+}
+
 TEST(RenderPlan, AlreadyClusteredInputIsNotClusteredAgain) {
   PlanRequest request;
   request.clusterBudget = 16;

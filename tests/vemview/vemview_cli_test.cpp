@@ -116,6 +116,33 @@ TEST_F(VemviewCli, LoneConvexObjectRendersWithoutShadowMaps) {
   EXPECT_EQ(lines[0]["shadow_maps_rendered"].get<int>(), 0);
 }
 
+// Maps of 4096 px: the atlas (at most GL_MAX_TEXTURE_SIZE square) holds fewer than the 32 asked
+// for, and vemview warned so, then reported 32 shadowed lights in its plan, status and timing log.
+TEST_F(VemviewCli, ShadowedCountIsWhatTheAtlasHoldsNotWhatWasAskedFor) {
+  const CommandRun r =
+      run(" --headless --width 64 --height 48 --count 32 --shadowed 32 "
+          "--shadow-map-px 4096 --scene spheres --no-png --no-exr --out " +
+          path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string warning = "shadow atlas holds ";
+  const auto at = r.err.find(warning);
+  if (at == std::string::npos) {
+    GTEST_SKIP() << "this OpenGL fits 32 maps of 4096 px, so no atlas is too small:\n" << r.err;
+  }
+  const std::size_t held = std::stoul(r.err.substr(at + warning.size()));
+  ASSERT_LT(held, 32U);
+  const std::string n = std::to_string(held);
+  const std::string plan =
+      "plan: lights 32, shadow maps " + n + " at 4096 px (32 asked for; the atlas holds " + n + ")";
+  EXPECT_NE(r.err.find(plan), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("lights 32, shadowed " + n + ";"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("shadowed 32"), std::string::npos) << r.err;
+  const auto timing = jsonLines(dir_ / "out" / "timing.jsonl");
+  ASSERT_EQ(timing.size(), 1U);
+  EXPECT_EQ(timing[0]["shadowed"], held);
+  EXPECT_EQ(timing[0]["shadow_maps_rendered"], held);
+}
+
 TEST_F(VemviewCli, LightFileFromVemtoolIsRendered) {
   write(
       "lights.jsonl",
