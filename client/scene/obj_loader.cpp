@@ -302,7 +302,11 @@ std::string joined(const Warnings& messages) {
 }  // namespace
 
 std::expected<LoadedScene, SceneFileFailure> loadObj(const fs::path& path) {
-  if (auto failure = checkReadableFile(path)) {
+  const auto text = readSceneFile(path);
+  if (!text) {
+    return std::unexpected(text.error());
+  }
+  if (auto failure = checkObjText(path, *text)) {  // before tinyobjloader reads the faces
     return std::unexpected(*failure);
   }
   tinyobj::ObjReaderConfig config;
@@ -317,9 +321,6 @@ std::expected<LoadedScene, SceneFileFailure> loadObj(const fs::path& path) {
   LoadedScene loaded;
   loaded.warnings = splitMessages(reader.Warning());
   std::ranges::copy(splitMessages(reader.Error()), std::back_inserter(loaded.warnings));
-  if (auto failure = findBadObjCoordinate(path)) {
-    return std::unexpected(*failure);
-  }
   if (auto failure = checkFaces(reader, path)) {
     return std::unexpected(*failure);
   }

@@ -3,7 +3,8 @@
 // Conventions:
 // - Positions are taken as they are, in the world frame of scene/scene.h (+Y up, the file's
 //   length unit); faces are counter-clockwise seen from the front, as the OBJ format specifies.
-//   Polygons are triangulated by tinyobjloader (ear clipping).
+//   Polygons are triangulated by tinyobjloader (ear clipping); faces of more than
+//   kMaxFaceVertices (256) vertices are refused (obj_text_check.h).
 // - One Mesh per (OBJ shape, material) pair, named "shape" or "shape/material". Vertices are
 //   deduplicated by (position index, normal index). When any face of a mesh lacks normals, the
 //   whole mesh gets smooth area-weighted normals (scene/mesh_normals.h) and a warning says so
@@ -19,10 +20,11 @@
 //                      diffuseAlbedo = Kd (1 - Pm)   (Pm: the extension's metallic, default 0)
 //     otherwise     -> Lambertian.
 //   Faces with no material (or no .mtl at all) get the default: Lambertian, 0.8 grey.
-// - Refused (BadContents, one sentence naming the file and the element): tinyobjloader's errors
-//   (with their line), coordinates that are not finite numbers (with their line), face indices
-//   out of range, faces that cannot be triangulated, zero-length normals, vertices whose smooth
-//   normal is undefined, no triangles at all.
+// - Refused (BadContents, one sentence naming the file and the element): the text check's
+//   findings, each with its line (obj_text_check.h: coordinates that are not finite numbers, face
+//   indices that are 0, malformed, too large or out of range, faces of fewer than 3 or more than
+//   kMaxFaceVertices vertices), tinyobjloader's errors (with their line), zero-length normals,
+//   vertices whose smooth normal is undefined, no triangles at all.
 #pragma once
 
 #include <expected>

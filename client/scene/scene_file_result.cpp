@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fstream>
+#include <iterator>
 #include <system_error>
 
 namespace vem::scene {
@@ -40,6 +41,20 @@ std::optional<SceneFileFailure> checkReadableFile(const std::filesystem::path& p
         fmt::format("scene file {} cannot be opened for reading.", path.string())};
   }
   return std::nullopt;
+}
+
+std::expected<std::string, SceneFileFailure> readSceneFile(const std::filesystem::path& path) {
+  if (auto failure = checkReadableFile(path)) {
+    return std::unexpected(*failure);
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) {
+    return std::unexpected(
+        SceneFileFailure{SceneFileError::Unreadable,
+                         fmt::format("scene file {} could not be read.", path.string())});
+  }
+  return bytes;
 }
 
 SceneFileFailure badContents(const std::filesystem::path& path, std::string_view what) {

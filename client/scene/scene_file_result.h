@@ -3,6 +3,7 @@
 // Shared by obj_loader.h, gltf_loader.h and scene_file.h; no units involved.
 #pragma once
 
+#include <expected>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -37,6 +38,10 @@ struct LoadedScene {
 
 // NotFound or Unreadable for `path`, or nothing when it is a regular file that opens.
 [[nodiscard]] std::optional<SceneFileFailure> checkReadableFile(const std::filesystem::path& path);
+
+// The whole of `path` as bytes, or checkReadableFile's failure (Unreadable when reading fails).
+[[nodiscard]] std::expected<std::string, SceneFileFailure> readSceneFile(
+    const std::filesystem::path& path);
 
 // A BadContents failure: "<path>: <what>." (`what` without the final full stop).
 [[nodiscard]] SceneFileFailure badContents(const std::filesystem::path& path,

@@ -1,12 +1,16 @@
 // The OBJ loader: round trips of files written here, normals, MTL lobes, and its refusals.
 #include "client/scene/obj_loader.h"
 
+#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <cmath>
+#include <string>
 
 #include <glm/glm.hpp>
 
 #include "client/scene/default_scene.h"
+#include "client/scene/obj_text_check.h"
 #include "scene_test_files.h"
 
 namespace vem::scene {
@@ -212,7 +216,84 @@ TEST(ObjLoaderRefuses, AQuadIndexOutOfRangeThatTinyobjDropsSilently) {
   TempDir dir;
   const auto failure =
       refusal(dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 1 2 3 7\n"));
-  EXPECT_THAT(failure.message, HasSubstr("out of range"));
+  EXPECT_THAT(failure.message,
+              HasSubstr("line 6: face corner '7' refers to vertex 7, but the file has 4 vertices"));
+}
+
+// tinyobjloader reads indices with atoi: this one was accepted, whatever it became.
+TEST(ObjLoaderRefuses, AFaceIndexTooLargeForAnyIntegerWithItsLine) {
+  TempDir dir;
+  const auto failure =
+      refusal(dir.write("huge.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999999\n"));
+  EXPECT_EQ(failure.error, SceneFileError::BadContents);
+  EXPECT_THAT(failure.message, HasSubstr("line 4: face corner '99999999999999999999999' refers to "
+                                         "vertex 99999999999999999999999, but the file has 3 "
+                                         "vertices"));
+}
+
+// 2^32 + 1 wrapped to a valid index and was reported as a zero-area triangle.
+TEST(ObjLoaderRefuses, AFaceIndexPastTwoToTheThirtyTwoInsteadOfWrappingIt) {
+  TempDir dir;
+  const auto failure =
+      refusal(dir.write("wrap.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n"));
+  EXPECT_THAT(
+      failure.message,
+      HasSubstr("line 4: face corner '4294967297' refers to vertex 4294967297, but the file "
+                "has 3 vertices"));
+}
+
+// A normal index of 2^32 + 1 wrapped to normal 1 and loaded without a word.
+TEST(ObjLoaderRefuses, ANormalIndexPastTwoToTheThirtyTwoInsteadOfWrappingIt) {
+  TempDir dir;
+  const auto failure = refusal(
+      dir.write("wrapn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4294967297\n"));
+  EXPECT_THAT(failure.message, HasSubstr("line 5: face corner '3//4294967297' refers to normal "
+                                         "4294967297, but the file has 1 normals"));
+}
+
+TEST(ObjLoaderRefuses, ARelativeIndexBeforeTheFirstVertexWithItsLine) {
+  TempDir dir;
+  const auto failure =
+      refusal(dir.write("back.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\nv 1 1 1\n"));
+  EXPECT_THAT(failure.message, HasSubstr("line 4: face corner '-4' refers to vertex -4 (counting "
+                                         "back), but only 3 vertices come before the face"));
+}
+
+TEST(ObjLoader, RelativeIndicesCountBackFromTheFace) {
+  TempDir dir;
+  const LoadedScene loaded =
+      loadOrFail(dir.write("rel.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 5 5 5\n"));
+  ASSERT_EQ(loaded.scene.meshes.size(), 1U);
+  expectNear(loaded.scene.meshes[0].positions[0], {0, 0, 0});
+  expectNear(loaded.scene.meshes[0].positions[2], {0, 1, 0});
+}
+
+// A convex polygon of `corners` vertices on the unit circle, as an OBJ file.
+std::string polygonObj(std::size_t corners) {
+  std::string obj;
+  for (std::size_t i = 0; i < corners; ++i) {
+    const double angle = 2.0 * 3.14159265358979 * static_cast<double>(i) / corners;
+    obj += fmt::format("v {} {} 0\n", std::cos(angle), std::sin(angle));
+  }
+  obj += "f";
+  for (std::size_t i = 1; i <= corners; ++i) {
+    obj += fmt::format(" {}", i);
+  }
+  return obj + "\n";
+}
+
+TEST(ObjLoader, APolygonOfTheMostVerticesIsTriangulated) {
+  TempDir dir;
+  const LoadedScene loaded = loadOrFail(dir.write("most.obj", polygonObj(kMaxFaceVertices)));
+  EXPECT_EQ(triangleCount(loaded.scene), kMaxFaceVertices - 2);
+}
+
+// Ear clipping took 65 s over a 100,000-vertex polygon; larger faces are refused at once.
+TEST(ObjLoaderRefuses, APolygonOfMoreThan256VerticesWithItsLine) {
+  TempDir dir;
+  const auto failure = refusal(dir.write("big.obj", polygonObj(kMaxFaceVertices + 1)));
+  EXPECT_THAT(failure.message, HasSubstr("line 258: face has 257 vertices and cannot be "
+                                         "triangulated, where 3 to 256 were expected"));
 }
 
 TEST(ObjLoaderRefuses, ANanVertexWithItsLine) {

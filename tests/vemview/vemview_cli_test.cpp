@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -239,6 +240,31 @@ TEST_F(VemviewCli, FaceIndexOutOfRangeIsRefusedNamingTheFile) {
 TEST_F(VemviewCli, NanVertexIsRefusedNamingTheFile) {
   write("nan.obj", "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n");
   expectRefused(kSmall + "--scene " + path("nan.obj"), "nan.obj");
+}
+
+TEST_F(VemviewCli, FaceIndexPastTwoToTheThirtyTwoIsRefusedWithItsLine) {
+  write("wrap.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n");
+  expectRefused(kSmall + "--scene " + path("wrap.obj"),
+                "wrap.obj: line 4: face corner '4294967297' refers to vertex 4294967297");
+}
+
+// Triangulating it took 65 s; it is refused before tinyobjloader reads it.
+TEST_F(VemviewCli, PolygonOfAHundredThousandVerticesIsRefusedWithItsLine) {
+  constexpr int kCorners = 100000;
+  std::ostringstream obj;
+  for (int i = 0; i < kCorners; ++i) {
+    const double angle = 2.0 * 3.14159265358979 * i / kCorners;
+    obj << "v " << std::cos(angle) << ' ' << std::sin(angle) << " 0\n";
+  }
+  obj << 'f';
+  for (int i = 1; i <= kCorners; ++i) {
+    obj << ' ' << i;
+  }
+  obj << '\n';
+  write("big.obj", obj.str());
+  expectRefused(kSmall + "--scene " + path("big.obj"),
+                "big.obj: line 100001: face has 100000 vertices and cannot be triangulated, where "
+                "3 to 256 were expected");
 }
 
 TEST_F(VemviewCli, UnknownSceneFormatIsRefused) {
