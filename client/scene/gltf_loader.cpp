@@ -6,14 +6,18 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 #include <utility>
 
 #include "client/scene/gltf_accessor.h"
+#include "client/scene/gltf_folder_access.h"
 #include "client/scene/mesh_normals.h"
+#include "util/printable.h"
 
 namespace vem::scene {
 namespace {
@@ -168,7 +172,8 @@ class GltfSceneBuilder {
     }
     const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-      const auto where = fmt::format("mesh {} ('{}') primitive {}", node.mesh, mesh.name, p);
+      const auto where =
+          fmt::format("mesh {} ('{}') primitive {}", node.mesh, util::printable(mesh.name), p);
       auto triangles = readPrimitive(mesh.primitives[p]);
       if (!triangles) {
         return badContents(path_, where + ": " + triangles.error());
@@ -313,36 +318,68 @@ bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, i
   return true;  // vemcast draws no textures
 }
 
-std::expected<tinygltf::Model, SceneFileFailure> parse(const fs::path& path,
-                                                       std::vector<std::string>& warnings) {
-  tinygltf::TinyGLTF gltf;
-  gltf.SetImageLoader(ignoreImage, nullptr);
-  tinygltf::Model model;
-  std::string error;
-  std::string warning;
+bool isGlb(const fs::path& path) {
   std::string extension = path.extension().string();
   std::ranges::transform(extension, extension.begin(),
                          [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  const bool ok = extension == ".glb"
-                      ? gltf.LoadBinaryFromFile(&model, &error, &warning, path.string())
-                      : gltf.LoadASCIIFromFile(&model, &error, &warning, path.string());
-  warnings = splitMessages(warning);
+  return extension == ".glb";
+}
+
+// tinygltf's remarks, each escaped (they quote names and URIs from the file).
+std::vector<std::string> printableMessages(std::string_view text) {
+  std::vector<std::string> messages = splitMessages(text);
+  for (std::string& message : messages) {
+    message = util::printable(message);
+  }
+  return messages;
+}
+
+std::expected<tinygltf::Model, SceneFileFailure> parse(const fs::path& path,
+                                                       const std::string& bytes,
+                                                       const OutsideFolderPolicy& outside,
+                                                       std::vector<std::string>& warnings) {
+  if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
+    return std::unexpected(badContents(
+        path,
+        fmt::format("the file has {} bytes, where at most 4 GiB was expected", bytes.size())));
+  }
+  const bool glb = isGlb(path);
+  tinygltf::TinyGLTF gltf;
+  gltf.SetImageLoader(ignoreImage, nullptr);
+  GltfFolderAccess access(SceneFolder(path, outside));
+  access.install(gltf);
+  tinygltf::Model model;
+  std::string error;
+  std::string warning;
+  const auto size = static_cast<unsigned int>(bytes.size());
+  const bool ok =
+      glb ? gltf.LoadBinaryFromMemory(&model, &error, &warning,
+                                      reinterpret_cast<const unsigned char*>(bytes.data()), size,
+                                      access.baseDir())
+          : gltf.LoadASCIIFromString(&model, &error, &warning, bytes.data(), size,
+                                     access.baseDir());
+  if (access.refusal()) {
+    return std::unexpected(badContents(path, *access.refusal()));
+  }
+  warnings = printableMessages(warning);
   if (!ok) {
     return std::unexpected(
         badContents(path, fmt::format("not a valid glTF 2.0 file (tinygltf: \"{}\")",
-                                      fmt::join(splitMessages(error), "; "))));
+                                      fmt::join(printableMessages(error), "; "))));
   }
   return model;
 }
 
 }  // namespace
 
-std::expected<LoadedScene, SceneFileFailure> loadGltf(const fs::path& path) {
-  if (auto failure = checkReadableFile(path)) {
-    return std::unexpected(*failure);
+std::expected<LoadedScene, SceneFileFailure> loadGltf(const fs::path& path,
+                                                      const OutsideFolderPolicy& outside) {
+  const auto bytes = readSceneFile(path);
+  if (!bytes) {
+    return std::unexpected(bytes.error());
   }
   LoadedScene loaded;
-  const auto model = parse(path, loaded.warnings);
+  const auto model = parse(path, *bytes, outside, loaded.warnings);
   if (!model) {
     return std::unexpected(model.error());
   }

@@ -19,21 +19,28 @@
 //     specularAlbedo = mix(0.04, base, m) = F0    (GGX only; zero for Lambertian)
 //   A primitive with no material gets vemcast's default (Lambertian, 0.8 grey), not glTF's
 //   default (a rough white metal), which would light very differently.
+// - Buffer and image URIs are read from the file's folder only (scene_folder.h,
+//   gltf_folder_access.h): one that resolves outside it (`..`, a symbolic link, an absolute path,
+//   a file: URI) is refused, and not opened, unless `outside` allows it; the working directory is
+//   never searched. data: URIs are decoded from the file itself, so they are bounded by its size.
 // - Refused (BadContents, one sentence naming the file, the mesh / primitive / accessor and what
-//   was expected): tinygltf's parse errors, primitives of a mode other than 4 (triangles),
-//   missing POSITION, accessors or buffer views past the end of their buffer, indices >= the
-//   vertex count, non-finite positions or normals, zero-length normals, no triangles.
+//   was expected): tinygltf's parse errors, a URI outside the folder, primitives of a mode other
+//   than 4 (triangles), missing POSITION, accessors or buffer views past the end of their buffer,
+//   indices >= the vertex count, non-finite positions or normals, zero-length normals, no
+//   triangles. Names and URIs from the file are escaped (util/printable.h) in messages and
+//   warnings.
 #pragma once
 
 #include <expected>
 #include <filesystem>
 
 #include "client/scene/scene_file_result.h"
+#include "client/scene/scene_folder.h"
 
 namespace vem::scene {
 
 // `.glb` files are read as binary glTF, anything else as JSON glTF.
 [[nodiscard]] std::expected<LoadedScene, SceneFileFailure> loadGltf(
-    const std::filesystem::path& path);
+    const std::filesystem::path& path, const OutsideFolderPolicy& outside = {});
 
 }  // namespace vem::scene

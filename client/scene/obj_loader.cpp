@@ -7,18 +7,31 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <iterator>
+#include <spanstream>
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 
 #include "client/scene/mesh_normals.h"
+#include "client/scene/obj_folder_materials.h"
 #include "client/scene/obj_text_check.h"
+#include "client/scene/scene_folder.h"
+#include "util/printable.h"
 
 namespace vem::scene {
 namespace {
 
 namespace fs = std::filesystem;
 using Warnings = std::vector<std::string>;
+using util::printable;
+
+// What tinyobjloader read.
+struct ParsedObj {
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+};
 
 constexpr float kMinRoughness = 0.01F;
 constexpr float kDielectricF0 = 0.04F;
@@ -38,7 +51,8 @@ glm::vec3 clampedColour(glm::vec3 colour, const char* field, const std::string& 
                         Warnings& warnings) {
   const glm::vec3 clamped = glm::clamp(colour, 0.0F, 1.0F);
   if (clamped != colour) {
-    warnings.push_back(fmt::format("material '{}': {} clamped to [0, 1]", material, field));
+    warnings.push_back(
+        fmt::format("material '{}': {} clamped to [0, 1]", printable(material), field));
   }
   return clamped;
 }
@@ -57,7 +71,7 @@ std::expected<Lobe, std::string> highlightLobe(const tinyobj::material_t& mtl) {
   return std::unexpected(
       fmt::format("material '{}' has vem_lobe '{}', where phong or blinn was "
                   "expected",
-                  mtl.name, value));
+                  printable(mtl.name), printable(value)));
 }
 
 std::expected<Material, std::string> fromMtl(const tinyobj::material_t& mtl, Warnings& warnings) {
@@ -72,7 +86,7 @@ std::expected<Material, std::string> fromMtl(const tinyobj::material_t& mtl, War
       return std::unexpected(
           fmt::format("material '{}' has both Pr (a GGX lobe) and vem_lobe, "
                       "where one of them was expected",
-                      mtl.name));
+                      printable(mtl.name)));
     }
     const float metallic = std::clamp(static_cast<float>(mtl.metallic), 0.0F, 1.0F);
     m.lobe = Lobe::Ggx;
@@ -87,8 +101,8 @@ std::expected<Material, std::string> fromMtl(const tinyobj::material_t& mtl, War
     m.specularAlbedo = ks;
     m.exponent = std::max(static_cast<float>(mtl.shininess), 0.0F);
   } else if (namesLobe) {
-    warnings.push_back(
-        fmt::format("material '{}': vem_lobe is ignored without Ks > 0 (Lambertian)", mtl.name));
+    warnings.push_back(fmt::format("material '{}': vem_lobe is ignored without Ks > 0 (Lambertian)",
+                                   printable(mtl.name)));
   }
   return m;
 }
@@ -98,20 +112,20 @@ bool outOfRange(int index, std::size_t count) {
 }
 
 // The first face that is not a triangle or refers to a missing vertex or normal.
-std::optional<SceneFileFailure> checkFaces(const tinyobj::ObjReader& reader, const fs::path& path) {
-  const std::size_t positions = reader.GetAttrib().vertices.size() / 3;
-  const std::size_t normals = reader.GetAttrib().normals.size() / 3;
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+std::optional<SceneFileFailure> checkFaces(const ParsedObj& obj, const fs::path& path) {
+  const std::size_t positions = obj.attrib.vertices.size() / 3;
+  const std::size_t normals = obj.attrib.normals.size() / 3;
+  for (const tinyobj::shape_t& shape : obj.shapes) {
     const auto& counts = shape.mesh.num_face_vertices;
     if (const auto bad = std::ranges::find_if(counts, [](unsigned char n) { return n != 3; });
         bad != counts.end()) {
       return badContents(path, fmt::format("face {} of shape '{}' has {} vertices and could not be "
                                            "triangulated",
-                                           bad - counts.begin() + 1, shape.name, *bad));
+                                           bad - counts.begin() + 1, printable(shape.name), *bad));
     }
     for (std::size_t i = 0; i < shape.mesh.indices.size(); ++i) {
       const tinyobj::index_t& corner = shape.mesh.indices[i];
-      const auto where = fmt::format("triangle {} of shape '{}'", i / 3 + 1, shape.name);
+      const auto where = fmt::format("triangle {} of shape '{}'", i / 3 + 1, printable(shape.name));
       if (outOfRange(corner.vertex_index, positions)) {
         return badContents(path, fmt::format("{} refers to vertex {}, but the file has {} vertices",
                                              where, corner.vertex_index + 1, positions));
@@ -133,8 +147,8 @@ std::optional<SceneFileFailure> fatalWarning(const Warnings& warnings, const fs:
     }
     if (warning.find("invalid vertex index") != std::string::npos ||
         warning.find("indices out of bounds") != std::string::npos) {
-      return badContents(
-          path, fmt::format("a face index is out of range (tinyobjloader: \"{}\")", warning));
+      return badContents(path, fmt::format("a face index is out of range (tinyobjloader: \"{}\")",
+                                           printable(warning)));
     }
   }
   return std::nullopt;
@@ -187,7 +201,7 @@ class MeshBuilder {
       warnings.push_back(
           fmt::format("shape '{}': {} of {} face corners have no normal; smooth "
                       "normals computed for all",
-                      shape.name, without, with + without));
+                      printable(shape.name), without, with + without));
     }
     return without == 0;
   }
@@ -220,9 +234,10 @@ class MeshBuilder {
   std::optional<SceneFileFailure> computeNormals(const tinyobj::shape_t& shape) {
     auto normals = smoothNormals(mesh_.positions, mesh_.indices);
     if (!normals) {
-      return badContents(path_, fmt::format("vertex {} of shape '{}' lies only on zero-area "
-                                            "triangles, so its normal is undefined",
-                                            firstSourceVertex_[normals.error()] + 1, shape.name));
+      return badContents(
+          path_, fmt::format("vertex {} of shape '{}' lies only on zero-area "
+                             "triangles, so its normal is undefined",
+                             firstSourceVertex_[normals.error()] + 1, printable(shape.name)));
     }
     mesh_.normals = std::move(*normals);
     return std::nullopt;
@@ -269,18 +284,18 @@ std::optional<SceneFileFailure> addShape(const tinyobj::shape_t& shape, MeshBuil
   return std::nullopt;
 }
 
-std::expected<Scene, SceneFileFailure> buildScene(const tinyobj::ObjReader& reader,
-                                                  const fs::path& path, Warnings& warnings) {
+std::expected<Scene, SceneFileFailure> buildScene(const ParsedObj& obj, const fs::path& path,
+                                                  Warnings& warnings) {
   Scene scene;
   scene.name = path.string();
-  for (const tinyobj::material_t& mtl : reader.GetMaterials()) {
+  for (const tinyobj::material_t& mtl : obj.materials) {
     auto material = fromMtl(mtl, warnings);
     if (!material) return std::unexpected(badContents(path, material.error()));
     scene.materials.push_back(std::move(*material));
   }
-  MeshBuilder builder(reader.GetAttrib(), path);
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    if (auto failure = addShape(shape, builder, scene, reader.GetMaterials().size(), warnings)) {
+  MeshBuilder builder(obj.attrib, path);
+  for (const tinyobj::shape_t& shape : obj.shapes) {
+    if (auto failure = addShape(shape, builder, scene, obj.materials.size(), warnings)) {
       return std::unexpected(*failure);
     }
   }
@@ -299,35 +314,63 @@ std::string joined(const Warnings& messages) {
   return fmt::format("{}", fmt::join(messages, "; "));
 }
 
+// tinyobjloader's remarks, each escaped (they quote names from the file).
+Warnings printableMessages(std::string_view text) {
+  Warnings messages = splitMessages(text);
+  for (std::string& message : messages) {
+    message = printable(message);
+  }
+  return messages;
+}
+
+// Parses the checked text; `mtllib` files are read through the folder's reader.
+std::expected<ParsedObj, SceneFileFailure> parse(const fs::path& path, const std::string& text,
+                                                 const OutsideFolderPolicy& outside,
+                                                 Warnings& warnings) {
+  ParsedObj obj;
+  FolderMaterialReader materials(SceneFolder(path, outside));
+  std::ispanstream in(std::span<const char>(text.data(), text.size()));
+  std::string warning;
+  std::string error;
+  const bool ok = tinyobj::LoadObj(&obj.attrib, &obj.shapes, &obj.materials, &warning, &error, &in,
+                                   &materials, /*triangulate=*/true,
+                                   /*default_vcols_fallback=*/false);
+  if (materials.refusal()) {
+    return std::unexpected(badContents(path, *materials.refusal()));
+  }
+  if (!ok) {
+    return std::unexpected(
+        badContents(path, fmt::format("not a valid OBJ file (tinyobjloader: \"{}\")",
+                                      joined(printableMessages(error)))));
+  }
+  warnings = printableMessages(warning);
+  std::ranges::copy(printableMessages(error), std::back_inserter(warnings));
+  return obj;
+}
+
 }  // namespace
 
-std::expected<LoadedScene, SceneFileFailure> loadObj(const fs::path& path) {
+std::expected<LoadedScene, SceneFileFailure> loadObj(const fs::path& path,
+                                                     const OutsideFolderPolicy& outside) {
   const auto text = readSceneFile(path);
   if (!text) {
     return std::unexpected(text.error());
   }
-  if (auto failure = checkObjText(path, *text)) {  // before tinyobjloader reads the faces
+  if (auto failure = checkObjText(path, *text)) {
     return std::unexpected(*failure);
   }
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path.string(), config)) {
-    return std::unexpected(
-        badContents(path, fmt::format("not a valid OBJ file (tinyobjloader: \"{}\")",
-                                      joined(splitMessages(reader.Error())))));
-  }
   LoadedScene loaded;
-  loaded.warnings = splitMessages(reader.Warning());
-  std::ranges::copy(splitMessages(reader.Error()), std::back_inserter(loaded.warnings));
-  if (auto failure = checkFaces(reader, path)) {
+  const auto obj = parse(path, *text, outside, loaded.warnings);
+  if (!obj) {
+    return std::unexpected(obj.error());
+  }
+  if (auto failure = checkFaces(*obj, path)) {
     return std::unexpected(*failure);
   }
   if (auto failure = fatalWarning(loaded.warnings, path)) {
     return std::unexpected(*failure);
   }
-  auto scene = buildScene(reader, path, loaded.warnings);
+  auto scene = buildScene(*obj, path, loaded.warnings);
   if (!scene) {
     return std::unexpected(scene.error());
   }

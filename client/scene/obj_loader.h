@@ -20,21 +20,26 @@
 //                      diffuseAlbedo = Kd (1 - Pm)   (Pm: the extension's metallic, default 0)
 //     otherwise     -> Lambertian.
 //   Faces with no material (or no .mtl at all) get the default: Lambertian, 0.8 grey.
+// - `mtllib` files are read from the OBJ file's folder only (scene_folder.h,
+//   obj_folder_materials.h): one that resolves outside it is refused, and not opened, unless
+//   `outside` allows it. MTL texture maps are not read (vemcast draws no textures).
 // - Refused (BadContents, one sentence naming the file and the element): the text check's
 //   findings, each with its line (obj_text_check.h: coordinates that are not finite numbers, face
 //   indices that are 0, malformed, too large or out of range, faces of fewer than 3 or more than
-//   kMaxFaceVertices vertices), tinyobjloader's errors (with their line), zero-length normals,
-//   vertices whose smooth normal is undefined, no triangles at all.
+//   kMaxFaceVertices vertices), tinyobjloader's errors (with their line), an `mtllib` outside the
+//   folder, zero-length normals, vertices whose smooth normal is undefined, no triangles at all.
+//   Names from the file are escaped (util/printable.h) in messages and warnings.
 #pragma once
 
 #include <expected>
 #include <filesystem>
 
 #include "client/scene/scene_file_result.h"
+#include "client/scene/scene_folder.h"
 
 namespace vem::scene {
 
 [[nodiscard]] std::expected<LoadedScene, SceneFileFailure> loadObj(
-    const std::filesystem::path& path);
+    const std::filesystem::path& path, const OutsideFolderPolicy& outside = {});
 
 }  // namespace vem::scene

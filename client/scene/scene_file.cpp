@@ -19,13 +19,14 @@ std::string lowerExtension(const std::filesystem::path& path) {
   return extension;
 }
 
-std::expected<LoadedScene, SceneFileFailure> dispatch(const std::filesystem::path& path) {
+std::expected<LoadedScene, SceneFileFailure> dispatch(const std::filesystem::path& path,
+                                                      const OutsideFolderPolicy& outside) {
   const std::string extension = lowerExtension(path);
   if (extension == ".obj") {
-    return loadObj(path);
+    return loadObj(path, outside);
   }
   if (extension == ".gltf" || extension == ".glb") {
-    return loadGltf(path);
+    return loadGltf(path, outside);
   }
   return std::unexpected(SceneFileFailure{
       SceneFileError::UnsupportedFormat,
@@ -36,9 +37,9 @@ std::expected<LoadedScene, SceneFileFailure> dispatch(const std::filesystem::pat
 }  // namespace
 
 std::expected<LoadedScene, SceneFileFailure> loadSceneWithWarnings(
-    const std::filesystem::path& path) {
+    const std::filesystem::path& path, const OutsideFolderPolicy& outside) {
   try {
-    return dispatch(path);
+    return dispatch(path, outside);
   } catch (const std::exception& e) {  // std::bad_alloc, or a throw inside a parser
     return std::unexpected(SceneFileFailure{
         SceneFileError::BadContents,
@@ -46,8 +47,9 @@ std::expected<LoadedScene, SceneFileFailure> loadSceneWithWarnings(
   }
 }
 
-std::expected<Scene, SceneFileFailure> loadScene(const std::filesystem::path& path) {
-  auto loaded = loadSceneWithWarnings(path);
+std::expected<Scene, SceneFileFailure> loadScene(const std::filesystem::path& path,
+                                                 const OutsideFolderPolicy& outside) {
+  auto loaded = loadSceneWithWarnings(path, outside);
   if (!loaded) {
     return std::unexpected(std::move(loaded.error()));
   }

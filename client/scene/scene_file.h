@@ -9,14 +9,17 @@
 
 #include "client/scene/scene.h"
 #include "client/scene/scene_file_result.h"
+#include "client/scene/scene_folder.h"
 
 namespace vem::scene {
 
-// The scene and the loader's warnings.
+// The scene and the loader's warnings. Files the scene references must lie in its folder unless
+// `outside` allows them (scene_folder.h).
 [[nodiscard]] std::expected<LoadedScene, SceneFileFailure> loadSceneWithWarnings(
-    const std::filesystem::path& path);
+    const std::filesystem::path& path, const OutsideFolderPolicy& outside = {});
 
 // The scene alone (warnings dropped).
-[[nodiscard]] std::expected<Scene, SceneFileFailure> loadScene(const std::filesystem::path& path);
+[[nodiscard]] std::expected<Scene, SceneFileFailure> loadScene(
+    const std::filesystem::path& path, const OutsideFolderPolicy& outside = {});
 
 }  // namespace vem::scene

@@ -10,7 +10,8 @@
 
 namespace vem::view {
 
-std::expected<scene::Scene, std::string> loadSceneArgument(const std::string& argument) {
+std::expected<scene::Scene, std::string> loadSceneArgument(const std::string& argument,
+                                                           bool allowOutside) {
   std::optional<scene::Scene> builtin;
   if (argument == "default" || argument == "diffuse") {
     scene::DefaultSceneOptions options;
@@ -27,7 +28,9 @@ std::expected<scene::Scene, std::string> loadSceneArgument(const std::string& ar
   if (builtin) {
     loaded = std::move(*builtin);
   } else {
-    auto file = scene::loadSceneWithWarnings(argument);
+    auto file = scene::loadSceneWithWarnings(
+        argument,
+        scene::OutsideFolderPolicy{allowOutside, "pass --scene-allow-outside to allow it"});
     if (!file) {
       return std::unexpected(file.error().message);
     }

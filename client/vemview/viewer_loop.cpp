@@ -170,7 +170,7 @@ int runViewer(const ViewerOptions& options) {
     }
     writer.emplace(std::move(*opened));
   }
-  auto scene = loadSceneArgument(options.scene);
+  auto scene = loadSceneArgument(options.scene, options.sceneAllowOutside);
   if (!scene) {
     spdlog::error("{}", scene.error());
     return EXIT_FAILURE;

@@ -20,6 +20,10 @@ void addInputOptions(CLI::App& app, ViewerOptions& o) {
   app.add_option("--scene", o.scene,
                  "Scene file (.obj, .gltf, .glb) or built-in: default, diffuse, spheres, sphere")
       ->capture_default_str();
+  app.add_flag("--scene-allow-outside", o.sceneAllowOutside,
+               "Let the scene file reference files outside its folder (OBJ mtllib, glTF buffer "
+               "and image URIs: absolute paths, file: URIs, '..', links leading out); refused "
+               "without it");
 }
 
 void addOutputOptions(CLI::App& app, ViewerOptions& o) {

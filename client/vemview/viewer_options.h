@@ -17,7 +17,8 @@ struct ViewerOptions {
   std::string token;
   std::string lightFile;
   std::string mapFile;
-  std::string scene = "default";  // a file (.obj, .gltf, .glb) or a built-in scene name
+  std::string scene = "default";   // a file (.obj, .gltf, .glb) or a built-in scene name
+  bool sceneAllowOutside = false;  // the scene file may reference files outside its folder
   // Output.
   bool headless = false;
   std::size_t frames = 0;  // 0: until the window closes (window) / 1 (headless)

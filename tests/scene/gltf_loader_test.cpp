@@ -6,7 +6,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <cmath>
+#include <filesystem>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -17,6 +20,7 @@ namespace {
 
 using test_files::firstHalf;
 using test_files::GltfTriangle;
+using test_files::OpenWatch;
 using test_files::TempDir;
 using ::testing::HasSubstr;
 
@@ -207,6 +211,99 @@ TEST(GltfLoaderRefuses, APrimitiveWithoutPositions) {
   const auto loaded = loadGltf(dir.write("nopos.gltf", json));
   ASSERT_FALSE(loaded);
   EXPECT_THAT(loaded.error().message, HasSubstr("has no POSITION attribute"));
+}
+
+// The scene's folder: tmp/scene/ holds the glTF file; tmp/outside.bin (the triangle's buffer, the
+// right size) lies beside it.
+struct OutsideBuffer {
+  TempDir dir;
+  GltfTriangle triangle;
+  std::filesystem::path outside = dir.write("outside.bin", bytesOf(triangle.bufferBytes()));
+
+  static std::string bytesOf(const std::vector<unsigned char>& bytes) {
+    return {bytes.begin(), bytes.end()};
+  }
+  // The refusal of tmp/scene/tri.gltf with the buffer URI `uri`, checking that the outside file
+  // was not opened.
+  std::string refusalFor(const std::string& uri) {
+    triangle.bufferUri = uri;
+    const OpenWatch watch(outside);
+    const auto path = dir.write("scene/tri.gltf", triangle.json());
+    const auto loaded = loadGltf(path);
+    EXPECT_FALSE(watch.opened());
+    if (loaded) {
+      ADD_FAILURE() << "the file was loaded, where a refusal was expected";
+      return {};
+    }
+    EXPECT_EQ(loaded.error().error, SceneFileError::BadContents);
+    EXPECT_THAT(loaded.error().message, HasSubstr(path.string() + ": "));
+    return loaded.error().message;
+  }
+  std::string folder() const { return std::filesystem::canonical(dir.path() / "scene").string(); }
+};
+
+TEST(GltfLoaderRefuses, BufferUriOutsideTheSceneFolderWithoutOpeningIt) {
+  OutsideBuffer scene;
+  const std::string message = scene.refusalFor("../outside.bin");
+  EXPECT_THAT(message,
+              HasSubstr("URI '../outside.bin' lies outside the scene's folder " + scene.folder()));
+}
+
+TEST(GltfLoaderRefuses, PercentEncodedDotsLeavingTheFolderWithoutOpeningIt) {
+  OutsideBuffer scene;
+  EXPECT_THAT(scene.refusalFor("%2e%2e/outside.bin"),
+              HasSubstr("URI '../outside.bin' lies outside the scene's folder"));
+}
+
+TEST(GltfLoaderRefuses, AnAbsoluteBufferUriWithoutOpeningIt) {
+  OutsideBuffer scene;
+  EXPECT_THAT(scene.refusalFor(scene.outside.string()),
+              HasSubstr("URI '" + scene.outside.string() + "' lies outside"));
+}
+
+TEST(GltfLoaderRefuses, AFileUriWithoutOpeningIt) {
+  OutsideBuffer scene;
+  EXPECT_THAT(scene.refusalFor("file://" + scene.outside.string()),
+              HasSubstr("URI 'file://" + scene.outside.string() + "' lies outside"));
+}
+
+TEST(GltfLoaderRefuses, BufferUriThroughALinkThatLeadsOutsideWithoutOpeningIt) {
+  OutsideBuffer scene;
+  scene.dir.link("scene/inside.bin", scene.outside);
+  EXPECT_THAT(scene.refusalFor("inside.bin"),
+              HasSubstr("URI 'inside.bin' lies outside the scene's folder"));
+}
+
+TEST(GltfLoaderRefuses, ImageUriOutsideTheSceneFolderWithoutOpeningIt) {
+  TempDir dir;
+  const auto outside = dir.write("outside.png", "not read");
+  const OpenWatch watch(outside);
+  GltfTriangle triangle;
+  triangle.extra = R"("images": [{"uri": "../outside.png"}])";
+  const auto loaded = loadGltf(dir.write("scene/tri.gltf", triangle.json()));
+  ASSERT_FALSE(loaded);
+  EXPECT_THAT(loaded.error().message, HasSubstr("URI '../outside.png' lies outside"));
+  EXPECT_FALSE(watch.opened());
+}
+
+TEST(GltfLoader, BufferFileInTheSceneFolderLoads) {
+  TempDir dir;
+  GltfTriangle triangle;
+  triangle.bufferUri = "data/tri.bin";
+  dir.write("scene/data/tri.bin", OutsideBuffer::bytesOf(triangle.bufferBytes()));
+  const auto loaded = loadGltf(dir.write("scene/tri.gltf", triangle.json()));
+  ASSERT_TRUE(loaded) << loaded.error().message;
+  EXPECT_EQ(triangleCount(loaded->scene), 1U);
+}
+
+TEST(GltfLoader, BufferUriOutsideTheFolderLoadsWhenAllowed) {
+  OutsideBuffer scene;
+  scene.triangle.bufferUri = "../outside.bin";
+  OutsideFolderPolicy allowed;
+  allowed.allowed = true;
+  const auto loaded = loadGltf(scene.dir.write("scene/tri.gltf", scene.triangle.json()), allowed);
+  ASSERT_TRUE(loaded) << loaded.error().message;
+  EXPECT_EQ(triangleCount(loaded->scene), 1U);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,7 @@ namespace {
 
 using test_files::cubeObj;
 using test_files::firstHalf;
+using test_files::OpenWatch;
 using test_files::TempDir;
 using ::testing::HasSubstr;
 
@@ -307,6 +309,83 @@ TEST(ObjLoaderRefuses, AnInfiniteNormal) {
   const auto failure =
       refusal(dir.write("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 inf 1\nf 1//1 2//1 3//1\n"));
   EXPECT_THAT(failure.message, HasSubstr("line 4: normal coordinate 'inf'"));
+}
+
+// The scene's folder: tmp/scene/ holds the OBJ file, tmp/outside.mtl lies beside it.
+constexpr const char* kOutsideMtl = "newmtl stolen\nKd 0.1 0.2 0.3\n";
+std::string objUsing(const std::string& mtllib) {
+  return "mtllib " + mtllib + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl stolen\nf 1 2 3\n";
+}
+
+TEST(ObjLoaderRefuses, MtllibOutsideTheSceneFolderWithoutOpeningIt) {
+  TempDir dir;
+  const auto outside = dir.write("outside.mtl", kOutsideMtl);
+  const OpenWatch watch(outside);
+  const auto failure = refusal(dir.write("scene/tri.obj", objUsing("../outside.mtl")));
+  EXPECT_EQ(failure.error, SceneFileError::BadContents);
+  EXPECT_THAT(failure.message,
+              HasSubstr(fmt::format("mtllib '../outside.mtl' lies outside the scene's folder {}",
+                                    std::filesystem::canonical(dir.path() / "scene").string())));
+  EXPECT_FALSE(watch.opened());
+}
+
+TEST(ObjLoaderRefuses, AnAbsoluteMtllibWithoutOpeningIt) {
+  TempDir dir;
+  const auto outside = dir.write("outside.mtl", kOutsideMtl);
+  const OpenWatch watch(outside);
+  const auto failure = refusal(dir.write("scene/tri.obj", objUsing(outside.string())));
+  EXPECT_THAT(failure.message, HasSubstr("mtllib '" + outside.string() + "' lies outside"));
+  EXPECT_FALSE(watch.opened());
+}
+
+TEST(ObjLoaderRefuses, MtllibThroughALinkThatLeadsOutsideWithoutOpeningIt) {
+  TempDir dir;
+  const auto outside = dir.write("outside.mtl", kOutsideMtl);
+  dir.link("scene/inside.mtl", outside);
+  const OpenWatch watch(outside);
+  const auto failure = refusal(dir.write("scene/tri.obj", objUsing("inside.mtl")));
+  EXPECT_THAT(failure.message, HasSubstr("mtllib 'inside.mtl' lies outside the scene's folder"));
+  EXPECT_FALSE(watch.opened());
+}
+
+TEST(ObjLoader, MtllibThatLeavesAndReentersTheFolderLoads) {
+  TempDir dir;
+  dir.write("scene/paints/m.mtl", kOutsideMtl);
+  const LoadedScene loaded =
+      loadOrFail(dir.write("scene/tri.obj", objUsing("paints/../../scene/paints/m.mtl")));
+  ASSERT_EQ(loaded.scene.materials.size(), 1U);
+  expectNear(loaded.scene.materials[0].diffuseAlbedo, {0.1F, 0.2F, 0.3F});
+}
+
+TEST(ObjLoader, MtllibOutsideTheFolderLoadsWhenAllowed) {
+  TempDir dir;
+  dir.write("outside.mtl", kOutsideMtl);
+  OutsideFolderPolicy allowed;
+  allowed.allowed = true;
+  const auto loaded = loadObj(dir.write("scene/tri.obj", objUsing("../outside.mtl")), allowed);
+  ASSERT_TRUE(loaded) << loaded.error().message;
+  ASSERT_EQ(loaded->scene.materials.size(), 1U);
+  expectNear(loaded->scene.materials[0].diffuseAlbedo, {0.1F, 0.2F, 0.3F});
+}
+
+TEST(ObjLoaderRefuses, MtllibOutsideSaysHowToAllowIt) {
+  TempDir dir;
+  OutsideFolderPolicy refused;
+  refused.howToAllow = "pass --x to allow it";
+  const auto loaded = loadObj(dir.write("scene/tri.obj", objUsing("../outside.mtl")), refused);
+  ASSERT_FALSE(loaded);
+  EXPECT_THAT(loaded.error().message, HasSubstr("lies outside the scene's folder "));
+  EXPECT_TRUE(loaded.error().message.ends_with(" (pass --x to allow it)."))
+      << loaded.error().message;
+}
+
+// Names from the file reach the message escaped: no forged line.
+TEST(ObjLoaderRefuses, AMaterialNameWithATerminalControlEscapedInTheMessage) {
+  TempDir dir;
+  dir.write("m.mtl", "newmtl odd\x1b[2J\nKd 0.2 0.2 0.2\nKs 0.3 0.3 0.3\nvem_lobe ward\n");
+  const auto failure = refusal(dir.write(
+      "tri.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl odd\x1b[2J\nf 1 2 3\n"));
+  EXPECT_THAT(failure.message, HasSubstr("material 'odd\\x1b[2J' has vem_lobe 'ward'"));
 }
 
 TEST(ObjLoaderRefuses, AFaceOfTwoVertices) {

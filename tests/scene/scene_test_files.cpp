@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <sys/inotify.h>
 #include <unistd.h>
 #include <atomic>
 #include <cstdio>
@@ -61,12 +62,34 @@ TempDir::~TempDir() {
 
 std::filesystem::path TempDir::write(const std::string& name, const std::string& contents) const {
   const auto file = path_ / name;
+  std::filesystem::create_directories(file.parent_path());
   std::ofstream out(file, std::ios::binary);
   out << contents;
   if (!out) {
     throw std::runtime_error("cannot write " + file.string());
   }
   return file;
+}
+
+std::filesystem::path TempDir::link(const std::string& name,
+                                    const std::filesystem::path& target) const {
+  const auto file = path_ / name;
+  std::filesystem::create_directories(file.parent_path());
+  std::filesystem::create_symlink(target, file);
+  return file;
+}
+
+OpenWatch::OpenWatch(const std::filesystem::path& file) : fd_(inotify_init1(IN_NONBLOCK)) {
+  if (fd_ < 0 || inotify_add_watch(fd_, file.c_str(), IN_OPEN) < 0) {
+    throw std::runtime_error("cannot watch " + file.string());
+  }
+}
+
+OpenWatch::~OpenWatch() { ::close(fd_); }
+
+bool OpenWatch::opened() const {
+  alignas(inotify_event) char events[4096];
+  return ::read(fd_, events, sizeof events) > 0;
 }
 
 std::string cubeObj(bool faceNormals) {
@@ -92,22 +115,31 @@ std::string cubeObj(bool faceNormals) {
 
 std::string firstHalf(const std::string& text) { return text.substr(0, text.size() / 2); }
 
-std::string GltfTriangle::json() const {
+std::vector<unsigned char> GltfTriangle::bufferBytes() const {
   std::vector<unsigned char> bytes;
   appendVec3s(bytes, positions);
-  // With no normals, accessor 1 (unused) repeats the positions.
-  const std::size_t normalOffset = normals.empty() ? 0 : bytes.size();
   appendVec3s(bytes, normals);
-  const std::size_t indexOffset = bytes.size();
   for (const std::uint16_t index : indices) {
     append(bytes, index);
   }
-  const std::size_t indexBytes = bytes.size() - indexOffset;
   while (bytes.size() % 4 != 0) {
     bytes.push_back(0);
   }
+  return bytes;
+}
+
+std::string GltfTriangle::json() const {
+  const std::vector<unsigned char> bytes = bufferBytes();
+  // With no normals, accessor 1 (unused) repeats the positions.
+  const std::size_t normalOffset = normals.empty() ? 0 : 12 * positions.size();
+  const std::size_t indexOffset = 12 * (positions.size() + normals.size());
+  const std::size_t indexBytes = 2 * indices.size();
+  const std::string uri = bufferUri.empty() ? R"(, "uri": "data:application/octet-stream;base64,)" +
+                                                  base64(bytes) + "\""
+                          : bufferUri == kNoUri ? std::string()
+                                                : R"(, "uri": ")" + bufferUri + "\"";
   const std::string normalAttribute = normals.empty() ? "" : R"(, "NORMAL": 1)";
-  const int count = positionCount < 0 ? static_cast<int>(positions.size()) : positionCount;
+  const std::uint64_t count = positionCount.value_or(positions.size());
   return fmt::format(
       R"({{"asset": {{"version": "2.0"}}, "scene": 0, "scenes": [{{"nodes": [0]}}],
   "nodes": {nodes},
@@ -115,7 +147,7 @@ std::string GltfTriangle::json() const {
     "indices": 2, "mode": {mode}, "material": 0}}]}}],
   "materials": [{{"name": "paint", "pbrMetallicRoughness": {{"baseColorFactor": [{base}, 1.0],
     "metallicFactor": {metallic}, "roughnessFactor": {roughness}}}}}],
-  "buffers": [{{"byteLength": {size}, "uri": "data:application/octet-stream;base64,{data}"}}],
+  "buffers": [{{"byteLength": {size}{uri}}}],{extra}
   "bufferViews": [{{"buffer": 0, "byteOffset": 0, "byteLength": {indexOffset}}},
                   {{"buffer": 0, "byteOffset": {indexOffset}, "byteLength": {indexBytes}}}],
   "accessors": [
@@ -126,12 +158,33 @@ std::string GltfTriangle::json() const {
 )",
       fmt::arg("nodes", nodes), fmt::arg("normal", normalAttribute), fmt::arg("mode", mode),
       fmt::arg("base", fmt::join(baseColour, ", ")), fmt::arg("metallic", metallic),
-      fmt::arg("roughness", roughness), fmt::arg("size", bytes.size()),
-      fmt::arg("data", base64(bytes)), fmt::arg("indexOffset", indexOffset),
-      fmt::arg("indexBytes", indexBytes), fmt::arg("count", count),
-      fmt::arg("normalOffset", normalOffset),
+      fmt::arg("roughness", roughness),
+      fmt::arg("size", byteLength < 0 ? static_cast<std::int64_t>(bytes.size()) : byteLength),
+      fmt::arg("uri", uri), fmt::arg("extra", extra.empty() ? extra : "\n  " + extra + ","),
+      fmt::arg("indexOffset", indexOffset), fmt::arg("indexBytes", indexBytes),
+      fmt::arg("count", count), fmt::arg("normalOffset", normalOffset),
       fmt::arg("normals", normals.empty() ? positions.size() : normals.size()),
       fmt::arg("indices", indices.size()));
+}
+
+std::string glb(const std::string& json, const std::vector<unsigned char>& bin,
+                std::int64_t binLengthChange) {
+  std::string text = json;
+  while (text.size() % 4 != 0) {
+    text += ' ';
+  }
+  std::vector<unsigned char> out;
+  const auto u32 = [&out](std::uint64_t value) { append(out, static_cast<std::uint32_t>(value)); };
+  out.insert(out.end(), {'g', 'l', 'T', 'F'});
+  u32(2);
+  u32(12 + 8 + text.size() + 8 + bin.size());
+  u32(text.size());
+  u32(0x4E4F534A);  // "JSON"
+  out.insert(out.end(), text.begin(), text.end());
+  u32(static_cast<std::uint64_t>(static_cast<std::int64_t>(bin.size()) + binLengthChange));
+  u32(0x004E4942);  // "BIN"
+  out.insert(out.end(), bin.begin(), bin.end());
+  return {out.begin(), out.end()};
 }
 
 }  // namespace vem::scene::test_files

@@ -242,6 +242,17 @@ TEST_F(VemviewCli, NanVertexIsRefusedNamingTheFile) {
   expectRefused(kSmall + "--scene " + path("nan.obj"), "nan.obj");
 }
 
+TEST_F(VemviewCli, SceneMtllibOutsideItsFolderIsRefusedUnlessAllowed) {
+  write("outside.mtl", "newmtl red\nKd 0.8 0.1 0.1\n");
+  fs::create_directories(dir_ / "scene");
+  write("scene/tri.obj", "mtllib ../outside.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+  const std::string args = kSmall + "--scene " + path("scene/tri.obj");
+  expectRefused(args, "tri.obj: mtllib '../outside.mtl' lies outside the scene's folder");
+  expectRefused(args, "(pass --scene-allow-outside to allow it).");
+  const CommandRun allowed = run(args + " --scene-allow-outside --no-png --no-exr");
+  EXPECT_EQ(allowed.exitCode, 0) << allowed.err;
+}
+
 TEST_F(VemviewCli, FaceIndexPastTwoToTheThirtyTwoIsRefusedWithItsLine) {
   write("wrap.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n");
   expectRefused(kSmall + "--scene " + path("wrap.obj"),
