@@ -15,7 +15,9 @@
 #include <utility>
 
 #include "client/scene/gltf_accessor.h"
+#include "client/scene/gltf_buffer_check.h"
 #include "client/scene/gltf_folder_access.h"
+#include "client/scene/gltf_node_tree.h"
 #include "client/scene/mesh_normals.h"
 #include "util/printable.h"
 
@@ -85,19 +87,29 @@ struct Triangles {
 
 class GltfSceneBuilder {
  public:
-  GltfSceneBuilder(const tinygltf::Model& model, const fs::path& path,
+  GltfSceneBuilder(const tinygltf::Model& model, const fs::path& path, GltfLimits limits,
                    std::vector<std::string>& warnings)
-      : model_(model), path_(path), warnings_(warnings), sceneMaterial_(model.materials.size()) {
+      : model_(model),
+        path_(path),
+        warnings_(warnings),
+        limits_(limits),
+        sceneMaterial_(model.materials.size()) {
     scene_.name = path.string();
   }
 
   Failure addRoots() {
-    const std::vector<int> roots = rootNodes();
-    if (!error_.empty()) {
-      return badContents(path_, error_);
+    const auto visits = nodesToDraw(model_);
+    if (!visits) {
+      return badContents(path_, visits.error());
     }
-    for (const int node : roots) {
-      if (auto failure = addNode(node, glm::mat4(1.0F), 0)) {
+    std::vector<glm::mat4> worldFromNode(model_.nodes.size(), glm::mat4(1.0F));
+    for (const NodeVisit& visit : *visits) {
+      const auto n = static_cast<std::size_t>(visit.node);
+      const glm::mat4 worldFromParent = visit.parent < 0
+                                            ? glm::mat4(1.0F)
+                                            : worldFromNode[static_cast<std::size_t>(visit.parent)];
+      worldFromNode[n] = worldFromParent * parentFromNode(model_.nodes[n]);
+      if (auto failure = addNodeMesh(model_.nodes[n], visit.node, worldFromNode[n])) {
         return failure;
       }
     }
@@ -107,55 +119,6 @@ class GltfSceneBuilder {
   Scene take() { return std::move(scene_); }
 
  private:
-  std::vector<int> rootNodes() {
-    const auto& scenes = model_.scenes;
-    if (model_.defaultScene >= static_cast<int>(scenes.size())) {
-      error_ = fmt::format("the default scene {} does not exist ({} scenes)", model_.defaultScene,
-                           scenes.size());
-      return {};
-    }
-    if (!scenes.empty()) {
-      return scenes[static_cast<std::size_t>(std::max(model_.defaultScene, 0))].nodes;
-    }
-    std::vector<bool> isChild(model_.nodes.size(), false);
-    for (const tinygltf::Node& node : model_.nodes) {
-      for (const int child : node.children) {
-        if (child >= 0 && static_cast<std::size_t>(child) < isChild.size()) {
-          isChild[static_cast<std::size_t>(child)] = true;
-        }
-      }
-    }
-    std::vector<int> roots;
-    for (std::size_t i = 0; i < isChild.size(); ++i) {
-      if (!isChild[i]) {
-        roots.push_back(static_cast<int>(i));
-      }
-    }
-    return roots;
-  }
-
-  Failure addNode(int index, const glm::mat4& worldFromParent, std::size_t depth) {
-    if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size()) {
-      return badContents(
-          path_, fmt::format("node {} does not exist ({} nodes)", index, model_.nodes.size()));
-    }
-    if (depth > model_.nodes.size()) {
-      return badContents(
-          path_, fmt::format("node {} is its own ancestor, where a tree was expected", index));
-    }
-    const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
-    const glm::mat4 worldFromNode = worldFromParent * parentFromNode(node);
-    if (auto failure = addNodeMesh(node, index, worldFromNode)) {
-      return failure;
-    }
-    for (const int child : node.children) {
-      if (auto failure = addNode(child, worldFromNode, depth + 1)) {
-        return failure;
-      }
-    }
-    return std::nullopt;
-  }
-
   Failure addNodeMesh(const tinygltf::Node& node, int index, const glm::mat4& worldFromNode) {
     if (node.mesh < 0) {
       return std::nullopt;
@@ -178,6 +141,9 @@ class GltfSceneBuilder {
       if (!triangles) {
         return badContents(path_, where + ": " + triangles.error());
       }
+      if (auto failure = countInstance(*triangles, index, where)) {
+        return failure;
+      }
       if (auto failure = addMesh(std::move(*triangles), worldFromNode, det < 0.0F, where)) {
         return failure;
       }
@@ -185,6 +151,27 @@ class GltfSceneBuilder {
       scene_.meshes.back().name =
           fmt::format("{}/{}", mesh.name.empty() ? std::to_string(node.mesh) : mesh.name, p);
     }
+    return std::nullopt;
+  }
+
+  // Adds one drawing of a primitive (by node `node`) to the scene's totals, refusing it when they
+  // would pass the limits: many nodes drawing one large mesh make a small file claim a huge scene.
+  // Each primitive is bounded by the file (its accessors lie in its buffers), so at most one
+  // drawing past the limits is ever read.
+  Failure countInstance(const Triangles& t, int node, const std::string& where) {
+    const std::size_t vertices = t.positions.size();
+    const std::size_t triangles = t.indices.size() / 3;
+    if (vertices > limits_.maxVertices - std::min(vertexTotal_, limits_.maxVertices) ||
+        triangles > limits_.maxTriangles - std::min(triangleTotal_, limits_.maxTriangles)) {
+      return badContents(
+          path_, fmt::format("{}, drawn by node {}, adds {} vertices and {} triangles to the {} "
+                             "and {} drawn before it, where a scene of at most {} vertices and "
+                             "{} triangles was expected",
+                             where, node, vertices, triangles, vertexTotal_, triangleTotal_,
+                             limits_.maxVertices, limits_.maxTriangles));
+    }
+    vertexTotal_ += vertices;
+    triangleTotal_ += triangles;
     return std::nullopt;
   }
 
@@ -308,7 +295,9 @@ class GltfSceneBuilder {
   const fs::path& path_;
   std::vector<std::string>& warnings_;
   Scene scene_;
-  std::string error_;
+  GltfLimits limits_;
+  std::size_t vertexTotal_ = 0;  // over every drawing of every primitive so far
+  std::size_t triangleTotal_ = 0;
   std::vector<std::optional<std::uint32_t>> sceneMaterial_;  // per glTF material
   std::optional<std::uint32_t> defaultMaterial_;
 };
@@ -344,6 +333,9 @@ std::expected<tinygltf::Model, SceneFileFailure> parse(const fs::path& path,
         fmt::format("the file has {} bytes, where at most 4 GiB was expected", bytes.size())));
   }
   const bool glb = isGlb(path);
+  if (auto problem = glb ? binChunkProblem(bytes) : std::string(); !problem.empty()) {
+    return std::unexpected(badContents(path, problem));
+  }
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(ignoreImage, nullptr);
   GltfFolderAccess access(SceneFolder(path, outside));
@@ -363,6 +355,11 @@ std::expected<tinygltf::Model, SceneFileFailure> parse(const fs::path& path,
   }
   warnings = printableMessages(warning);
   if (!ok) {
+    if (error.find("Failed to decode 'uri'") != std::string::npos) {
+      if (auto problem = dataUriProblem(bytes, glb); !problem.empty()) {
+        return std::unexpected(badContents(path, problem));
+      }
+    }
     return std::unexpected(
         badContents(path, fmt::format("not a valid glTF 2.0 file (tinygltf: \"{}\")",
                                       fmt::join(printableMessages(error), "; "))));
@@ -373,7 +370,8 @@ std::expected<tinygltf::Model, SceneFileFailure> parse(const fs::path& path,
 }  // namespace
 
 std::expected<LoadedScene, SceneFileFailure> loadGltf(const fs::path& path,
-                                                      const OutsideFolderPolicy& outside) {
+                                                      const OutsideFolderPolicy& outside,
+                                                      GltfLimits limits) {
   const auto bytes = readSceneFile(path);
   if (!bytes) {
     return std::unexpected(bytes.error());
@@ -383,7 +381,7 @@ std::expected<LoadedScene, SceneFileFailure> loadGltf(const fs::path& path,
   if (!model) {
     return std::unexpected(model.error());
   }
-  GltfSceneBuilder builder(*model, path, loaded.warnings);
+  GltfSceneBuilder builder(*model, path, limits, loaded.warnings);
   if (auto failure = builder.addRoots()) {
     return std::unexpected(*failure);
   }

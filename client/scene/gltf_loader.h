@@ -23,14 +23,22 @@
 //   gltf_folder_access.h): one that resolves outside it (`..`, a symbolic link, an absolute path,
 //   a file: URI) is refused, and not opened, unless `outside` allows it; the working directory is
 //   never searched. data: URIs are decoded from the file itself, so they are bounded by its size.
+// - A scene from one file holds at most kMaxSceneVertices vertices and kMaxSceneTriangles
+//   triangles over all its nodes' drawings (GltfLimits): many nodes can draw one large mesh, so a
+//   small file could otherwise claim any size. Each drawing is read (bounded by the file's size)
+//   and then counted, so at most one drawing past the limits is read.
 // - Refused (BadContents, one sentence naming the file, the mesh / primitive / accessor and what
-//   was expected): tinygltf's parse errors, a URI outside the folder, primitives of a mode other
-//   than 4 (triangles), missing POSITION, accessors or buffer views past the end of their buffer,
-//   indices >= the vertex count, non-finite positions or normals, zero-length normals, no
-//   triangles. Names and URIs from the file are escaped (util/printable.h) in messages and
-//   warnings.
+//   was expected): tinygltf's parse errors (among them a buffer whose byteLength differs from
+//   what its URI or the GLB BIN chunk holds, said plainly for data: URIs), a GLB BIN chunk that
+//   runs past the end of the file (gltf_buffer_check.h), a URI outside the folder, a node
+//   hierarchy that is not a forest (gltf_node_tree.h), primitives of a mode other than 4
+//   (triangles), missing POSITION, accessors or buffer views past the end of their buffer
+//   (gltf_accessor.h), indices >= the vertex count, a scene past the limits above, non-finite
+//   positions or normals, zero-length normals, no triangles. Names and URIs from the file are
+//   escaped (util/printable.h) in messages and warnings.
 #pragma once
 
+#include <cstddef>
 #include <expected>
 #include <filesystem>
 
@@ -39,8 +47,17 @@
 
 namespace vem::scene {
 
+inline constexpr std::size_t kMaxSceneVertices = std::size_t{1} << 24U;   // 16,777,216
+inline constexpr std::size_t kMaxSceneTriangles = std::size_t{1} << 24U;  // 16,777,216
+
+struct GltfLimits {
+  std::size_t maxVertices = kMaxSceneVertices;
+  std::size_t maxTriangles = kMaxSceneTriangles;
+};
+
 // `.glb` files are read as binary glTF, anything else as JSON glTF.
 [[nodiscard]] std::expected<LoadedScene, SceneFileFailure> loadGltf(
-    const std::filesystem::path& path, const OutsideFolderPolicy& outside = {});
+    const std::filesystem::path& path, const OutsideFolderPolicy& outside = {},
+    GltfLimits limits = {});
 
 }  // namespace vem::scene

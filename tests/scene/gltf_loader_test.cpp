@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -185,6 +186,22 @@ TEST(GltfLoaderRefuses, AnAccessorPastTheEndOfItsBuffer) {
                                            "past the end of buffer view 0"));
 }
 
+// count * 12 bytes wraps around to 0 in 64 bits: a product-based check would let it through and
+// allocate 2^62 positions.
+TEST(GltfLoaderRefuses, AnAccessorCountWhoseByteSizeWrapsAround) {
+  GltfTriangle triangle;
+  triangle.positionCount = std::uint64_t{1} << 62U;
+  EXPECT_THAT(refusal(triangle), HasSubstr("accessor 0 (4611686018427387904 elements of 12 bytes "
+                                           "from byte 0) runs past the end of buffer view 0"));
+}
+
+TEST(GltfLoaderRefuses, AnAccessorCountOfTheLargestUnsigned64BitNumber) {
+  GltfTriangle triangle;
+  triangle.positionCount = ~std::uint64_t{0};
+  EXPECT_THAT(refusal(triangle), HasSubstr("accessor 0 (18446744073709551615 elements of 12 bytes "
+                                           "from byte 0) runs past the end of buffer view 0"));
+}
+
 TEST(GltfLoaderRefuses, AnIndexPastTheVertexCount) {
   GltfTriangle triangle;
   triangle.indices = {0, 1, 7};
@@ -304,6 +321,86 @@ TEST(GltfLoader, BufferUriOutsideTheFolderLoadsWhenAllowed) {
   const auto loaded = loadGltf(scene.dir.write("scene/tri.gltf", scene.triangle.json()), allowed);
   ASSERT_TRUE(loaded) << loaded.error().message;
   EXPECT_EQ(triangleCount(loaded->scene), 1U);
+}
+
+// tinygltf reads a GLB's BIN chunk up to 8 bytes past the end when its length claims them.
+TEST(GltfLoaderRefuses, AGlbBinChunkThatRunsPastTheEndOfTheFile) {
+  TempDir dir;
+  GltfTriangle triangle;
+  triangle.bufferUri = GltfTriangle::kNoUri;
+  const auto bin = triangle.bufferBytes();
+  triangle.byteLength = static_cast<std::int64_t>(bin.size()) + 8;
+  const auto path = dir.write("tri.glb", test_files::glb(triangle.json(), bin, 8));
+  const auto loaded = loadGltf(path);
+  ASSERT_FALSE(loaded);
+  EXPECT_THAT(loaded.error().message, HasSubstr("its BIN chunk claims 88 bytes from byte "));
+  EXPECT_THAT(loaded.error().message, HasSubstr("past the end of the file's"));
+}
+
+TEST(GltfLoader, GlbWithItsBufferInTheBinChunkLoads) {
+  TempDir dir;
+  GltfTriangle triangle;
+  triangle.bufferUri = GltfTriangle::kNoUri;
+  const auto loaded =
+      loadGltf(dir.write("tri.glb", test_files::glb(triangle.json(), triangle.bufferBytes())));
+  ASSERT_TRUE(loaded) << loaded.error().message;
+  EXPECT_EQ(triangleCount(loaded->scene), 1U);
+}
+
+// tinygltf said only "Failed to decode 'uri'" and quoted the whole URI.
+TEST(GltfLoaderRefuses, ABufferByteLengthLargerThanTheFileSayingSo) {
+  GltfTriangle triangle;
+  triangle.byteLength = 1'000'000'000'000'000;
+  EXPECT_THAT(refusal(triangle), HasSubstr("buffer 0 has byteLength 1000000000000000, where the 80 "
+                                           "bytes its data: URI holds were expected"));
+}
+
+TEST(GltfLoaderRefuses, ANodeListedTwiceAmongItsParentsChildren) {
+  GltfTriangle triangle;
+  triangle.nodes = R"([{"children": [1, 1]}, {"mesh": 0}])";
+  EXPECT_THAT(refusal(triangle), HasSubstr("node 1 is listed twice among node 0's children"));
+}
+
+// glTF nodes form trees: shared children would let a small file draw a mesh 1000^k times.
+TEST(GltfLoaderRefuses, ANodeThatIsTheChildOfTwoNodes) {
+  GltfTriangle triangle;
+  triangle.nodes = R"([{"children": [1, 2]}, {"children": [3]}, {"children": [3]}, {"mesh": 0}])";
+  EXPECT_THAT(refusal(triangle), HasSubstr("node 3 is a child of node 1 and of node 2, where a "
+                                           "tree (one parent) was expected"));
+}
+
+TEST(GltfLoaderRefuses, ARootThatIsAlsoAChild) {
+  GltfTriangle triangle;
+  triangle.nodes = R"([{"mesh": 0, "children": [1]}, {"children": [0]}])";
+  EXPECT_THAT(refusal(triangle),
+              HasSubstr("node 0 is a root of the scene and a child of node 1, where a tree"));
+}
+
+// The walk was recursive: a long chain of nodes overflowed the stack.
+TEST(GltfLoader, AChainOf100000NodesLoads) {
+  GltfTriangle triangle;
+  constexpr int kNodes = 100000;
+  std::string nodes = "[";
+  for (int i = 0; i + 1 < kNodes; ++i) {
+    nodes += fmt::format(R"({{"children": [{}]}},)", i + 1);
+  }
+  triangle.nodes = nodes + R"({"mesh": 0}])";
+  const Scene scene = loadOrFail(triangle);
+  EXPECT_EQ(triangleCount(scene), 1U);
+}
+
+TEST(GltfLoaderRefuses, NodesDrawingAMeshPastTheSceneLimits) {
+  GltfTriangle triangle;
+  triangle.nodes = R"([{"children": [1, 2, 3]}, {"mesh": 0}, {"mesh": 0}, {"mesh": 0}])";
+  TempDir dir;
+  const auto path = dir.write("tri.gltf", triangle.json());
+  const auto loaded = loadGltf(path, {}, GltfLimits{100, 2});
+  ASSERT_FALSE(loaded);
+  EXPECT_THAT(loaded.error().message,
+              HasSubstr("mesh 0 ('tri') primitive 0, drawn by node 3, adds 3 vertices and 1 "
+                        "triangles to the 6 and 2 drawn before it, where a scene of at most 100 "
+                        "vertices and 2 triangles was expected"));
+  EXPECT_TRUE(loadGltf(path, {}, GltfLimits{100, 3}));
 }
 
 }  // namespace
