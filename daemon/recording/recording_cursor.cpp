@@ -11,14 +11,10 @@ RecordingCursor::RecordingCursor(ByteSource& source, ReadLimits limits)
 
 std::uint64_t RecordingCursor::payloadBound(std::uint16_t type) const {
   switch (RecordType(type)) {
-    case RecordType::Header:
-      return limits_.maxHeaderBytes;
-    case RecordType::Index:
-      return limits_.maxIndexBytes;
-    case RecordType::Footer:
-      return kFooterPayloadBytes;
-    case RecordType::Frame:
-      break;
+    case RecordType::Header: return limits_.maxHeaderBytes;
+    case RecordType::Index: return limits_.maxIndexBytes;
+    case RecordType::Footer: return kFooterPayloadBytes;
+    case RecordType::Frame: break;
   }
   // Frames, and records of unknown types: at most one frame's worth.
   const std::uint64_t frame =
@@ -49,13 +45,10 @@ OpenStatus RecordingCursor::open() {
   }
   header_ = decodeHeaderPayload(record.payload, limits_);
   switch (header_.status) {
-    case HeaderStatus::Ok:
-      break;
-    case HeaderStatus::UnknownVersion:
-      return OpenStatus::UnknownVersion;
+    case HeaderStatus::Ok: break;
+    case HeaderStatus::UnknownVersion: return OpenStatus::UnknownVersion;
     case HeaderStatus::Malformed:
-    case HeaderStatus::BadValues:
-      return OpenStatus::BadHeader;
+    case HeaderStatus::BadValues: return OpenStatus::BadHeader;
   }
   firstFrameOffset_ = record.endOffset();
   loadIndex();
@@ -108,10 +101,8 @@ ReadStep RecordingCursor::next(RecordedFrame& out) {
         scanner_.markDamaged(record);
         break;
       case RecordType::Index:
-      case RecordType::Footer:
-        break;
-      default:
-        scanner_.countUnknown();
+      case RecordType::Footer: break;
+      default: scanner_.countUnknown();
     }
   }
 }
@@ -131,14 +122,10 @@ ReadStep RecordingCursor::nextSummary(FrameSummary& out, std::uint64_t& recordOf
         }
         scanner_.markDamaged(record);
         break;
-      case RecordType::Header:
-        scanner_.markDamaged(record);
-        break;
+      case RecordType::Header: scanner_.markDamaged(record); break;
       case RecordType::Index:
-      case RecordType::Footer:
-        break;
-      default:
-        scanner_.countUnknown();
+      case RecordType::Footer: break;
+      default: scanner_.countUnknown();
     }
   }
 }

@@ -1,6 +1,6 @@
 // The trailing index of a VEM recording (docs/vem-format.md): an Index record listing where each
-// frame record starts (vem.proto.RecordingIndex), then a fixed 32-byte Footer record at the very end
-// of the file pointing back to it:
+// frame record starts (vem.proto.RecordingIndex), then a fixed 32-byte Footer record at the very
+// end of the file pointing back to it:
 //
 //   Footer payload (16 bytes): u64 little-endian offset of the Index record,
 //                              u64 little-endian size of the Index record (header + payload)

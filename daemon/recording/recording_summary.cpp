@@ -23,14 +23,10 @@ FrameScan scanFrames(RecordingCursor& cursor) {
 
 const char* indexStateName(IndexState state) {
   switch (state) {
-    case IndexState::Valid:
-      return "valid";
-    case IndexState::Stale:
-      return "stale";
-    case IndexState::Missing:
-      return "missing";
-    case IndexState::Damaged:
-      return "damaged";
+    case IndexState::Valid: return "valid";
+    case IndexState::Stale: return "stale";
+    case IndexState::Missing: return "missing";
+    case IndexState::Damaged: return "damaged";
   }
   return "?";
 }
@@ -87,15 +83,11 @@ RecordingSummary summarizeRecording(const RecordingCursor& cursor, const FrameSc
   switch (cursor.indexStatus()) {
     case IndexStatus::Valid:
       s.indexEntries = cursor.index().size();
-      s.index = std::ranges::equal(cursor.index(), scan.entries) ? IndexState::Valid
-                                                                 : IndexState::Stale;
+      s.index =
+          std::ranges::equal(cursor.index(), scan.entries) ? IndexState::Valid : IndexState::Stale;
       break;
-    case IndexStatus::Missing:
-      s.index = IndexState::Missing;
-      break;
-    case IndexStatus::Damaged:
-      s.index = IndexState::Damaged;
-      break;
+    case IndexStatus::Missing: s.index = IndexState::Missing; break;
+    case IndexStatus::Damaged: s.index = IndexState::Damaged; break;
   }
   return s;
 }

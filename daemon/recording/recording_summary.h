@@ -45,15 +45,15 @@ struct RecordingSummary {
   std::uint64_t framesWithLights = 0;
   std::optional<std::uint64_t> firstSeq, lastSeq;
   std::optional<std::int64_t> firstTsNs, lastTsNs;
-  double meanRateHz = 0.0;             // (frames - 1) / (lastTs - firstTs); 0 below two frames
-  std::uint64_t sequenceGaps = 0;      // places where seq jumps forward by more than 1
-  std::uint64_t missingFrames = 0;     // sequence numbers skipped by those jumps
-  std::uint64_t sequenceDisorders = 0; // places where seq does not increase
-  std::uint64_t timestampGaps = 0;     // intervals longer than 1.5 frame periods
+  double meanRateHz = 0.0;              // (frames - 1) / (lastTs - firstTs); 0 below two frames
+  std::uint64_t sequenceGaps = 0;       // places where seq jumps forward by more than 1
+  std::uint64_t missingFrames = 0;      // sequence numbers skipped by those jumps
+  std::uint64_t sequenceDisorders = 0;  // places where seq does not increase
+  std::uint64_t timestampGaps = 0;      // intervals longer than 1.5 frame periods
   std::int64_t longestIntervalNs = 0;
   DamageStats damage;
   IndexState index = IndexState::Missing;
-  std::uint64_t indexEntries = 0;      // entries of the intact index (0 when none)
+  std::uint64_t indexEntries = 0;  // entries of the intact index (0 when none)
   bool ioError = false;
 };
 

@@ -64,8 +64,9 @@ std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
   if (!syncData(writer.fd_.get())) {
     const int error = errno;
     writer.fd_ = FileDescriptor();
-    return std::unexpected(RecordingFailure{
-        RecordingError::WriteFailed, name + ": cannot flush the header (" + errnoText(error) + ")"});
+    return std::unexpected(
+        RecordingFailure{RecordingError::WriteFailed,
+                         name + ": cannot flush the header (" + errnoText(error) + ")"});
   }
   return writer;
 }
@@ -132,8 +133,8 @@ std::expected<void, RecordingFailure> RecordingWriter::append(std::uint64_t seq,
     codec_.encodeRecord(seq, captureTsNs, frame, lights, record_);
   } catch (const std::exception& e) {
     return std::unexpected(RecordingFailure{
-        RecordingError::WriteFailed, path_.string() + ": cannot compress frame " +
-                                         std::to_string(seq) + " (" + e.what() + ")"});
+        RecordingError::WriteFailed,
+        path_.string() + ": cannot compress frame " + std::to_string(seq) + " (" + e.what() + ")"});
   }
   const std::uint64_t offset = end_;
   auto written = writeAtEnd(record_, "frame " + std::to_string(seq));
@@ -143,10 +144,10 @@ std::expected<void, RecordingFailure> RecordingWriter::append(std::uint64_t seq,
     framesSinceSync_ = 0;
     if (!syncData(fd_.get())) {
       const int error = errno;
-      return std::unexpected(RecordingFailure{
-          RecordingError::WriteFailed, path_.string() + ": cannot flush frame " +
-                                           std::to_string(seq) + " to disk (" +
-                                           errnoText(error) + ")"});
+      return std::unexpected(
+          RecordingFailure{RecordingError::WriteFailed, path_.string() + ": cannot flush frame " +
+                                                            std::to_string(seq) + " to disk (" +
+                                                            errnoText(error) + ")"});
     }
   }
   return {};

@@ -19,9 +19,9 @@ namespace vem::recording {
 
 struct RecoverReport {
   IndexState indexBefore = IndexState::Missing;
-  std::uint64_t framesIndexed = 0;   // intact frames the new index lists
-  std::uint64_t appendedBytes = 0;   // 0 when the index was already valid
-  DamageStats damage;                // what the scan skipped
+  std::uint64_t framesIndexed = 0;  // intact frames the new index lists
+  std::uint64_t appendedBytes = 0;  // 0 when the index was already valid
+  DamageStats damage;               // what the scan skipped
 };
 
 // Fails like RecordingReader::open, or with WriteFailed when the trailer cannot be appended (the

@@ -30,8 +30,9 @@ TEST_F(Errors, UnknownFormatVersionIsRefusedWithAClearMessage) {
   ASSERT_FALSE(reader);
   EXPECT_EQ(reader.error().cause, RecordingError::UnknownVersion);
   EXPECT_EQ(reader.error().message,
-            path.string() + ": VEM format version 7 is not supported (expected version 1; a newer "
-                            "vemcast may read it)");
+            path.string() +
+                ": VEM format version 7 is not supported (expected version 1; a newer "
+                "vemcast may read it)");
 }
 
 TEST_F(Errors, OtherFilesAreNotVemRecordings) {
@@ -41,13 +42,15 @@ TEST_F(Errors, OtherFilesAreNotVemRecordings) {
   ASSERT_FALSE(reader);
   EXPECT_EQ(reader.error().cause, RecordingError::NotVem);
   EXPECT_EQ(reader.error().message,
-            text.string() + ": not a VEM recording (expected the record magic 8a 56 45 4d at its "
-                            "start)");
+            text.string() +
+                ": not a VEM recording (expected the record magic 8a 56 45 4d at its "
+                "start)");
   const fs::path empty = dir_ / "empty.vem";
   writeBytes(empty, "", 0);
   auto none = recording::RecordingReader::open(empty);
   ASSERT_FALSE(none);
-  EXPECT_EQ(none.error().message, empty.string() + ": the file is empty (expected a VEM recording)");
+  EXPECT_EQ(none.error().message,
+            empty.string() + ": the file is empty (expected a VEM recording)");
   auto missing = recording::RecordingReader::open(dir_ / "nothere.vem");
   ASSERT_FALSE(missing);
   EXPECT_EQ(missing.error().cause, RecordingError::NotFound);
@@ -109,8 +112,9 @@ TEST_F(Errors, WriterRefusesToOverwriteAnExistingFile) {
   const std::vector<char> before = readBytes(path);
   auto writer = recording::RecordingWriter::create(path, smallHeader());
   ASSERT_FALSE(writer);
-  EXPECT_EQ(writer.error().message, path.string() + ": a file is already there (refusing to "
-                                                    "overwrite it)");
+  EXPECT_EQ(writer.error().message, path.string() +
+                                        ": a file is already there (refusing to "
+                                        "overwrite it)");
   EXPECT_EQ(readBytes(path), before);
 }
 
@@ -159,11 +163,11 @@ TEST_F(Errors, WriteErrorMidRecordingReturnsAValueAndTheFramesWrittenStayReadabl
     for (int i = 0; i < 100; ++i) {
       auto done = writer->append(std::uint64_t(i), i * kPeriodNs, smallFrame(header, i));
       if (!done) {
-        const bool clear = done.error().cause == RecordingError::WriteFailed &&
-                           done.error().message.find("File too large") != std::string::npos &&
-                           done.error().message.find("the " + std::to_string(written) +
-                                                     " frames before it stay readable") !=
-                               std::string::npos;
+        const bool clear =
+            done.error().cause == RecordingError::WriteFailed &&
+            done.error().message.find("File too large") != std::string::npos &&
+            done.error().message.find("the " + std::to_string(written) +
+                                      " frames before it stay readable") != std::string::npos;
         (void)writer->close();  // fails too (no room for the index): must not crash
         ::_exit(clear ? written : 201);
       }

@@ -80,9 +80,9 @@ inline LightSet awkwardLights(int index) {
     Light l;
     l.id = i * 7 + std::uint32_t(index);
     l.dir = glm::vec3(0.6F, 0.8F * float(i), -0.0F);
-    l.rgb = glm::vec3(std::numeric_limits<float>::denorm_min(), 1.0F / 3.0F + float(index),
-                      i == 3 ? std::numeric_limits<float>::quiet_NaN()
-                             : std::numeric_limits<float>::infinity());
+    l.rgb = glm::vec3(
+        std::numeric_limits<float>::denorm_min(), 1.0F / 3.0F + float(index),
+        i == 3 ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity());
     set.lights.push_back(l);
   }
   return set;

@@ -12,11 +12,11 @@
 #include <nlohmann/json.hpp>
 
 #include "recording/record_format.h"
+#include "recording/recording_fixtures.h"
+#include "recording/recording_header.h"
+#include "recording/recording_index.h"
 #include "recording/recording_reader.h"
 #include "recording/recording_writer.h"
-#include "recording/recording_index.h"
-#include "recording/recording_header.h"
-#include "recording/recording_fixtures.h"
 #include "support/command_run.h"
 
 namespace {

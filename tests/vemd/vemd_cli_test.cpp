@@ -47,7 +47,7 @@ TEST_F(VemdCli, ReplaysNFramesAndPrintsTheFinalReport) {
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 6, false);
   const CommandRun r = run("--source replay:" + path.string() +
-                          " --rate max --frames 4 --lights 64 --stats-every 0");
+                           " --rate max --frames 4 --lights 64 --stats-every 0");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("final "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(": 4 in, 4 processed ("), std::string::npos) << r.err;
@@ -60,7 +60,7 @@ TEST_F(VemdCli, WritesTheLightsOfEveryFrameToTheJsonlFile) {
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 5, false);
   const CommandRun r = run("--source replay:" + path.string() + " --rate max --lights 16 --out " +
-                          dir_.string() + " --jsonl lights.jsonl");
+                           dir_.string() + " --jsonl lights.jsonl");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string lines = readTextFile(dir_ / "lights.jsonl");
   EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 5) << lines;
@@ -72,14 +72,15 @@ TEST_F(VemdCli, OutFolderThatDoesNotExistYetIsCreatedWithJsonlAndNumberedPreview
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 5, false);
   const fs::path out = dir_ / "new" / "out";
-  const CommandRun r = run("--source replay:" + path.string() + " --rate max --lights 16 --out " +
-                          out.string() + " --jsonl lights.jsonl --preview-every 2 --preview-numbered");
+  const CommandRun r =
+      run("--source replay:" + path.string() + " --rate max --lights 16 --out " + out.string() +
+          " --jsonl lights.jsonl --preview-every 2 --preview-numbered");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string lines = readTextFile(out / "lights.jsonl");
   EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 5) << lines;
   EXPECT_TRUE(fs::exists(out / "preview.png"));
-  for (const char* kept : {"preview-0000000000.png", "preview-0000000002.png",
-                           "preview-0000000004.png"}) {
+  for (const char* kept :
+       {"preview-0000000000.png", "preview-0000000002.png", "preview-0000000004.png"}) {
     EXPECT_TRUE(fs::exists(out / kept)) << kept;
   }
   EXPECT_FALSE(fs::exists(out / "preview-0000000001.png"));
@@ -90,11 +91,11 @@ TEST_F(VemdCli, OutPathThatIsAFileIsRefusedInOneSentence) {
   writeSkyRecording(path, 2, false);
   std::ofstream(dir_ / "a-file") << "x";
   const CommandRun r = run("--source replay:" + path.string() + " --out " +
-                          (dir_ / "a-file").string() + " --jsonl lights.jsonl");
+                           (dir_ / "a-file").string() + " --jsonl lights.jsonl");
   EXPECT_EQ(r.exitCode, 1) << r.err;
-  EXPECT_NE(r.err.find("output.dir: cannot use " + (dir_ / "a-file").string() +
-                       " as the output folder"),
-            std::string::npos)
+  EXPECT_NE(
+      r.err.find("output.dir: cannot use " + (dir_ / "a-file").string() + " as the output folder"),
+      std::string::npos)
       << r.err;
 }
 
@@ -129,7 +130,8 @@ TEST_F(VemdCli, SigtermStopsCleanlyAndTheRecordingGetsItsIndex) {
   ASSERT_TRUE(recording) << readTextFile(err);
   ASSERT_TRUE(WIFEXITED(status)) << readTextFile(err);
   EXPECT_EQ(WEXITSTATUS(status), 0) << readTextFile(err);
-  EXPECT_NE(readTextFile(err).find("stopping: a stop was requested"), std::string::npos) << readTextFile(err);
+  EXPECT_NE(readTextFile(err).find("stopping: a stop was requested"), std::string::npos)
+      << readTextFile(err);
   auto reader = recording::RecordingReader::open(recorded);
   ASSERT_TRUE(reader) << reader.error().message;
   EXPECT_TRUE(reader->hasIndex());

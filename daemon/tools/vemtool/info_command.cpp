@@ -63,9 +63,10 @@ std::string summaryText(const std::string& file, const recording::RecordingSumma
   t += fmt::format("camera:      {} (serial {}), {} x {} {}, nominal {} Hz\n", h.cameraModel,
                    h.cameraSerial, h.sensorWidthPx, h.sensorHeightPx,
                    calib::pixelFormatName(h.pixelFormat), h.nominalRateHz);
-  t += fmt::format("calibration: {}\n", h.calibrationToml.empty()
-                                            ? std::string("none")
-                                            : fmt::format("{} bytes of TOML", h.calibrationToml.size()));
+  t += fmt::format("calibration: {}\n",
+                   h.calibrationToml.empty()
+                       ? std::string("none")
+                       : fmt::format("{} bytes of TOML", h.calibrationToml.size()));
   t += fmt::format("writer:      {} {}, created {} ns after 1970 (UTC)\n", h.writerName,
                    h.writerVersion, h.createdUnixNs);
   t += fmt::format("frames:      {}", s.frames);
@@ -80,10 +81,11 @@ std::string summaryText(const std::string& file, const recording::RecordingSumma
       "periods; longest interval {:.3f} ms)\n",
       s.sequenceGaps, s.missingFrames, s.sequenceDisorders, s.timestampGaps,
       double(s.longestIntervalNs) * 1e-6);
-  t += fmt::format("damage:      {} damaged records ({} bytes skipped), truncated tail {} bytes, {} "
-                   "unknown records\n",
-                   s.damage.damagedRecords, s.damage.damagedBytes, s.damage.truncatedTailBytes,
-                   s.damage.unknownRecords);
+  t += fmt::format(
+      "damage:      {} damaged records ({} bytes skipped), truncated tail {} bytes, {} "
+      "unknown records\n",
+      s.damage.damagedRecords, s.damage.damagedBytes, s.damage.truncatedTailBytes,
+      s.damage.unknownRecords);
   t += fmt::format("index:       {}", recording::indexStateName(s.index));
   if (s.index == recording::IndexState::Valid || s.index == recording::IndexState::Stale) {
     t += fmt::format(" ({} entries)", s.indexEntries);
@@ -117,8 +119,9 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand(
       "info", "Describe a VEM recording: header, frames, rate, gaps, damage, index");
-  cmd->footer("Example:\n  vemtool info session.vem --format json\n"
-              "Reads every record (checking each CRC32C) but decompresses no pixels.");
+  cmd->footer(
+      "Example:\n  vemtool info session.vem --format json\n"
+      "Reads every record (checking each CRC32C) but decompresses no pixels.");
   cmd->add_option("file", options->input, "The recording (.vem)")->required();
   cmd->add_option_function<std::string>(
          "--format", [options](const std::string& f) { options->json = f == "json"; },
