@@ -139,10 +139,7 @@ bool RecordingCursor::ensureIndexForSeek() {
   std::uint64_t offset = 0;
   ReadStep step;
   while ((step = nextSummary(summary, offset)) == ReadStep::Frame) {
-    // Sequence numbers going backwards cannot be searched: keep the increasing ones.
-    if (entries.empty() || summary.seq > entries.back().seq) {
-      entries.push_back({summary.seq, summary.captureTsNs, offset});
-    }
+    entries.push_back({summary.seq, summary.captureTsNs, offset});
   }
   scanner_ = std::move(saved);
   if (step == ReadStep::IoError) return false;
@@ -154,13 +151,12 @@ SeekStep RecordingCursor::seek(std::uint64_t seq) {
   if (!ensureIndexForSeek()) return SeekStep::IoError;
   const std::vector<IndexEntry>& entries =
       indexStatus_ == IndexStatus::Valid ? index_ : *scannedIndex_;
-  const auto at = std::lower_bound(entries.begin(), entries.end(), seq,
-                                   [](const IndexEntry& e, std::uint64_t s) { return e.seq < s; });
-  if (at == entries.end()) {
+  const std::optional<std::size_t> at = seekEntry(entries, seq);
+  if (!at) {
     scanner_.seek(source_->size());
     return SeekStep::NotFound;
   }
-  scanner_.seek(at->offset);
+  scanner_.seek(entries[*at].offset);
   return SeekStep::Found;
 }
 

@@ -65,8 +65,9 @@ class RecordingCursor {
   // The next intact frame's metadata (its record CRC checked, pixels not decompressed) and the
   // offset of its record.
   [[nodiscard]] ReadStep nextSummary(FrameSummary& out, std::uint64_t& recordOffset);
-  // Positions the cursor so that next() yields the first intact frame with a sequence number
-  // >= seq. Uses the index, or else builds one by scanning the file once.
+  // Positions the cursor so that next() yields the intact frame with the least sequence number
+  // >= seq (the first in file order among equals; seekEntry), then the frames after it in file
+  // order. Uses the index, or else builds one by scanning the file once.
   [[nodiscard]] SeekStep seek(std::uint64_t seq);
   // Back to the first frame; stats() start again from zero.
   void rewind();

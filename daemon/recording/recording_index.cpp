@@ -50,11 +50,20 @@ std::optional<std::vector<IndexEntry>> decodeIndexPayload(std::span<const std::b
         indexOffset - entry.offset < kRecordHeaderBytes) {
       return std::nullopt;
     }
-    if (!entries.empty() && entry.seq <= entries.back().seq) return std::nullopt;
     nextFree = entry.offset + kRecordHeaderBytes;
     entries.push_back(entry);
   }
   return entries;
+}
+
+std::optional<std::size_t> seekEntry(std::span<const IndexEntry> entries, std::uint64_t seq) {
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (entries[i].seq < seq) continue;
+    if (!best || entries[i].seq < entries[*best].seq) best = i;
+    if (entries[i].seq == seq) break;  // the least possible: none later can be better
+  }
+  return best;
 }
 
 }  // namespace vem::recording

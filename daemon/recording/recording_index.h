@@ -43,9 +43,17 @@ struct FooterFields {
 [[nodiscard]] std::optional<FooterFields> decodeFooterPayload(std::span<const std::byte> payload);
 
 // The entries of an Index record's payload, when it parses and is consistent with a file whose
-// frame records lie in [firstFrameOffset, indexOffset): offsets and sequence numbers increasing,
-// each entry leaving room for a record before the next.
+// frame records lie in [firstFrameOffset, indexOffset): offsets increasing, each entry leaving
+// room for a record before the next. Sequence numbers need not increase: the index lists every
+// intact frame in file order, a frame out of order or a counter that wrapped included.
 [[nodiscard]] std::optional<std::vector<IndexEntry>> decodeIndexPayload(
     std::span<const std::byte> payload, std::uint64_t firstFrameOffset, std::uint64_t indexOffset);
+
+// Where seeking to `seq` lands among `entries` (in file order): the entry with the least sequence
+// number at or above `seq`, the first in file order among equals; nullopt when every entry's is
+// below. With increasing numbers that is the first entry at or after `seq`; with a frame out of
+// order it is still the frame numbered `seq` when there is one. Linear in the entries.
+[[nodiscard]] std::optional<std::size_t> seekEntry(std::span<const IndexEntry> entries,
+                                                   std::uint64_t seq);
 
 }  // namespace vem::recording

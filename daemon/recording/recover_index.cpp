@@ -64,17 +64,13 @@ std::expected<RecoverReport, RecordingFailure> recoverIndex(const std::filesyste
   RecoverReport report;
   report.indexBefore = summary.index;
   report.damage = scan->damage;
-  std::vector<IndexEntry> entries;
-  entries.reserve(scan->entries.size());
-  for (const IndexEntry& entry : scan->entries) {
-    // An index lists increasing sequence numbers; a frame out of order stays readable in sequence.
-    if (entries.empty() || entry.seq > entries.back().seq) entries.push_back(entry);
-  }
-  report.framesIndexed = entries.size();
+  // Every intact frame, in file order, out-of-order ones included: exactly what info counts and
+  // what makes the index valid, so a second run finds it valid and writes nothing.
+  report.framesIndexed = scan->entries.size();
   if (summary.index == IndexState::Valid) return report;
 
   const std::uint64_t size = summary.fileBytes;
-  const std::vector<std::byte> trailer = encodeTrailer(entries, size);
+  const std::vector<std::byte> trailer = encodeTrailer(scan->entries, size);
   if (auto appended = appendTrailer(path, size, trailer); !appended) {
     return std::unexpected(appended.error());
   }

@@ -1,5 +1,6 @@
 // The trailing index: used for seeking when intact, never needed to read the frames, and rebuilt
 // by recoverIndex without losing a complete frame.
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -199,6 +200,100 @@ TEST_F(Index, RecoverOfADamagedFileIndexesEveryIntactFrame) {
   auto frame = reader->next();
   ASSERT_TRUE(frame && *frame);
   EXPECT_EQ((*frame)->seq, 7U) << "the first intact frame at or after 6";
+}
+
+// Sequence numbers a camera or writer should never produce but a file may hold: a frame out of
+// order, a repeat, a counter wrapping past 2^64 - 1, one going back from 0 to 2^64 - 1.
+const std::vector<std::vector<HandFrame>>& awkwardSequences() {
+  constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+  static const std::vector<std::vector<HandFrame>> sequences{
+      {{0, 0}, {1, 1}, {2, 2}, {4, 3}, {3, 4}, {5, 5}, {6, 6}},
+      {{0, 0}, {1, 1}, {1, 2}, {2, 3}},
+      {{kMax - 1, 0}, {kMax, 1}, {0, 2}, {1, 3}},
+      {{1, 0}, {0, 1}, {kMax, 2}, {kMax - 1, 3}},
+  };
+  return sequences;
+}
+
+// recover used to index only the frames whose seq increased: info then called that index stale
+// and every run appended another one. Now the file settles after one run.
+TEST_F(Index, RecoverRunThreeTimesLeavesTheSameBytes) {
+  for (const std::vector<HandFrame>& frames : awkwardSequences()) {
+    SCOPED_TRACE(::testing::Message() << "seq " << frames[1].seq << " after " << frames[0].seq);
+    const fs::path path = dir_ / "awkward.vem";
+    writeRecordingByHand(path, frames);
+    std::vector<std::vector<char>> after;
+    for (int run = 0; run < 3; ++run) {
+      auto report = recording::recoverIndex(path);
+      ASSERT_TRUE(report) << report.error().message;
+      EXPECT_EQ(report->framesIndexed, frames.size()) << "run " << run + 1;
+      EXPECT_EQ(report->appendedBytes > 0, run == 0) << "run " << run + 1;
+      after.push_back(readBytes(path));
+    }
+    EXPECT_EQ(after[1], after[0]);
+    EXPECT_EQ(after[2], after[0]);
+    fs::remove(path);
+  }
+}
+
+TEST_F(Index, RecoverIndexesTheFrameOutOfOrderThatInfoCounts) {
+  for (const std::vector<HandFrame>& frames : awkwardSequences()) {
+    SCOPED_TRACE(::testing::Message() << "seq " << frames[1].seq << " after " << frames[0].seq);
+    const fs::path path = dir_ / "awkward.vem";
+    writeRecordingByHand(path, frames);
+    ASSERT_TRUE(recording::recoverIndex(path));
+    auto reader = recording::RecordingReader::open(path);
+    ASSERT_TRUE(reader && reader->hasIndex());
+    auto summary = reader->summarize();
+    ASSERT_TRUE(summary);
+    EXPECT_EQ(summary->frames, frames.size());
+    EXPECT_EQ(summary->indexEntries, frames.size());
+    EXPECT_EQ(summary->index, recording::IndexState::Valid);
+    ASSERT_EQ(reader->index().size(), frames.size());
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      EXPECT_EQ(reader->index()[i].seq, frames[i].seq);
+    fs::remove(path);
+  }
+}
+
+// Seeking used to search only the increasing sequence numbers, so it jumped past a frame that came
+// out of order to the next higher one.
+TEST_F(Index, SeekFindsAFrameThatCameOutOfOrder) {
+  const std::vector<HandFrame> frames{{0, 0}, {1, 1}, {2, 2}, {4, 3}, {3, 4}, {5, 5}, {6, 6}};
+  const fs::path path = dir_ / "swapped.vem";
+  writeRecordingByHand(path, frames);
+  for (const bool indexed : {false, true}) {
+    SCOPED_TRACE(indexed ? "with the index recover wrote" : "without an index");
+    if (indexed) {
+      ASSERT_TRUE(recording::recoverIndex(path));
+    }
+    auto reader = recording::RecordingReader::open(path);
+    ASSERT_TRUE(reader);
+    ASSERT_EQ(reader->hasIndex(), indexed);
+    auto found = reader->seek(3);
+    ASSERT_TRUE(found && *found);
+    auto frame = reader->next();
+    ASSERT_TRUE(frame && *frame);
+    EXPECT_EQ((*frame)->seq, 3U);
+    auto after = reader->next();
+    ASSERT_TRUE(after && *after);
+    EXPECT_EQ((*after)->seq, 5U) << "then on in file order";
+    auto past = reader->seek(7);
+    ASSERT_TRUE(past);
+    EXPECT_FALSE(*past);
+  }
+}
+
+TEST(SeekEntry, LeastSequenceNumberAtOrAboveTheTargetFirstInFileOrder) {
+  const std::vector<recording::IndexEntry> entries{
+      {10, 0, 100}, {4, 0, 200}, {7, 0, 300}, {4, 0, 400}, {12, 0, 500}};
+  EXPECT_EQ(recording::seekEntry(entries, 0), 1U);
+  EXPECT_EQ(recording::seekEntry(entries, 4), 1U);
+  EXPECT_EQ(recording::seekEntry(entries, 5), 2U);
+  EXPECT_EQ(recording::seekEntry(entries, 8), 0U);
+  EXPECT_EQ(recording::seekEntry(entries, 12), 4U);
+  EXPECT_EQ(recording::seekEntry(entries, 13), std::nullopt);
+  EXPECT_EQ(recording::seekEntry({}, 0), std::nullopt);
 }
 
 }  // namespace

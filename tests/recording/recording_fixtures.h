@@ -17,6 +17,8 @@
 #include <gtest/gtest.h>
 
 #include "calib/io/camera_file.h"
+#include "recording/frame_codec.h"
+#include "recording/recording_header.h"
 #include "recording/recording_reader.h"
 #include "recording/recording_writer.h"
 #include "support/test_cameras.h"
@@ -134,6 +136,28 @@ inline void writeSmallRecording(const fs::path& path, int frames,
     auto closed = writer->close();
     ASSERT_TRUE(closed) << closed.error().message;
   }
+}
+
+// A recording written by hand, record by record, with whatever sequence numbers and capture
+// times it is given, none checked (the writer refuses a seq that does not increase; other
+// writers, or damage, may not). No index or footer: the file ends after the last frame, as a
+// crash leaves it. Frame i is smallFrame(header, i).
+struct HandFrame {
+  std::uint64_t seq = 0;
+  std::int64_t captureTsNs = 0;
+};
+
+inline void writeRecordingByHand(const fs::path& path, const std::vector<HandFrame>& frames,
+                                 const recording::RecordingHeader& header = smallHeader()) {
+  std::vector<std::byte> bytes = recording::encodeHeaderRecord(header);
+  recording::FrameCodec codec;
+  std::vector<std::byte> record;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    codec.encodeRecord(frames[i].seq, frames[i].captureTsNs, smallFrame(header, int(i)), nullptr,
+                       record);
+    bytes.insert(bytes.end(), record.begin(), record.end());
+  }
+  writeBytes(path, reinterpret_cast<const char*>(bytes.data()), bytes.size());
 }
 
 // Every intact frame of the file, in order, and the reader's damage counts.

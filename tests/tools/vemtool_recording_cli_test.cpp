@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -98,6 +99,40 @@ TEST_F(VemtoolRecordingCli, RecoverRestoresTheIndexThatInfoReportsMissing) {
   const CommandRun again = run("recover " + path.string());
   ASSERT_EQ(again.exitCode, 0);
   EXPECT_NE(again.out.find("already valid"), std::string::npos) << again.out;
+}
+
+// 90 frames, one of them out of order: info counted 90, recover indexed 89, info then called
+// that index stale, and every further recover appended another index.
+TEST_F(VemtoolRecordingCli, RecoverOfAnOutOfOrderFrameSettlesAndAgreesWithInfo) {
+  std::vector<vem::testing::HandFrame> frames;
+  for (std::uint64_t i = 0; i < 90; ++i) frames.push_back({i, std::int64_t(i) * 33'333'333});
+  std::swap(frames[40].seq, frames[41].seq);
+  const fs::path path = dir_ / "swapped.vem";
+  vem::testing::writeRecordingByHand(path, frames);
+
+  const CommandRun before = run("info " + path.string() + " --format json");
+  ASSERT_EQ(before.exitCode, 0) << before.err;
+  EXPECT_EQ(nlohmann::json::parse(before.out)["frames"], 90);
+
+  std::vector<std::vector<char>> bytesAfter;
+  for (int i = 0; i < 3; ++i) {
+    const CommandRun recover = run("recover " + path.string());
+    ASSERT_EQ(recover.exitCode, 0) << recover.err;
+    const std::string expected =
+        i == 0 ? "appended a new index of 90 frames" : "the index is already valid (90 frames)";
+    EXPECT_NE(recover.out.find(expected), std::string::npos)
+        << "run " << i + 1 << ": " << recover.out;
+    bytesAfter.push_back(readBytes(path));
+  }
+  EXPECT_EQ(bytesAfter[1], bytesAfter[0]) << "the second run changed the file";
+  EXPECT_EQ(bytesAfter[2], bytesAfter[0]) << "the third run changed the file";
+
+  const CommandRun after = run("info " + path.string() + " --format json");
+  ASSERT_EQ(after.exitCode, 0) << after.err;
+  const auto a = nlohmann::json::parse(after.out);
+  EXPECT_EQ(a["index"], "valid");
+  EXPECT_EQ(a["frames"], 90);
+  EXPECT_EQ(a["index_entries"], 90);
 }
 
 TEST_F(VemtoolRecordingCli, NotARecordingGivesOneErrorLineAndFails) {
