@@ -31,16 +31,49 @@ const char* indexStateName(IndexState state) {
   return "?";
 }
 
+SequenceStep classifySequenceStep(std::uint64_t previous, std::uint64_t seq) {
+  if (seq == previous) return SequenceStep::Repeat;
+  constexpr std::uint64_t kHalf = std::uint64_t(1) << 63;
+  const std::uint64_t ahead = seq - previous;  // modulo 2^64: the way forward round the circle
+  const bool forward = seq > previous;
+  const bool forwardOnCircle = ahead < kHalf || (ahead == kHalf && forward);
+  if (forward != forwardOnCircle) return SequenceStep::Wrap;
+  if (!forward) return SequenceStep::Back;
+  return ahead == 1 ? SequenceStep::Next : SequenceStep::Gap;
+}
+
+const char* sequenceStepName(SequenceStep step) {
+  switch (step) {
+    case SequenceStep::Next: return "next";
+    case SequenceStep::Gap: return "gap";
+    case SequenceStep::Repeat: return "repeat";
+    case SequenceStep::Back: return "back";
+    case SequenceStep::Wrap: return "wrap";
+  }
+  return "?";
+}
+
 namespace {
 
 void summarizeSequence(const std::vector<IndexEntry>& entries, RecordingSummary& s) {
   for (std::size_t i = 1; i < entries.size(); ++i) {
     const std::uint64_t previous = entries[i - 1].seq, seq = entries[i].seq;
-    if (seq <= previous) {
-      ++s.sequenceDisorders;
-    } else if (seq - previous > 1) {
-      ++s.sequenceGaps;
-      s.missingFrames += seq - previous - 1;
+    switch (const SequenceStep step = classifySequenceStep(previous, seq)) {
+      case SequenceStep::Next: break;
+      case SequenceStep::Gap: {
+        ++s.sequenceGaps;
+        const std::uint64_t skipped = seq - previous - 1;  // seq > previous + 1 here
+        s.missingFrames =
+            skipped > UINT64_MAX - s.missingFrames ? UINT64_MAX : s.missingFrames + skipped;
+        break;
+      }
+      case SequenceStep::Repeat:
+      case SequenceStep::Back:
+      case SequenceStep::Wrap:
+        if (s.sequenceDisorders++ == 0) {
+          s.firstDisorder = SequenceDisorder{step, previous, seq, i + 1, entries[i].offset};
+        }
+        break;
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -133,6 +134,44 @@ TEST_F(VemtoolRecordingCli, RecoverOfAnOutOfOrderFrameSettlesAndAgreesWithInfo) 
   EXPECT_EQ(a["index"], "valid");
   EXPECT_EQ(a["frames"], 90);
   EXPECT_EQ(a["index_entries"], 90);
+}
+
+// seq 0 then 2^64 - 1: info printed "18446744073709551614 frames missing".
+TEST_F(VemtoolRecordingCli, InfoNamesASeqWrapInsteadOfAGiganticMissingCount) {
+  const std::uint64_t top = std::numeric_limits<std::uint64_t>::max();
+  const fs::path path = dir_ / "wrap.vem";
+  vem::testing::writeRecordingByHand(path, {{0, 0}, {top, 33'333'333}, {top - 2, 66'666'666}});
+  std::uint64_t offset = 0;
+  {
+    auto reader = vem::recording::RecordingReader::open(path);
+    ASSERT_TRUE(reader);
+    auto scan = reader->scan();
+    ASSERT_TRUE(scan && scan->entries.size() == 3);
+    offset = scan->entries[1].offset;
+  }
+  const CommandRun text = run("info " + path.string());
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_EQ(text.out.find("18446744073709551614"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("gaps:        0 in sequence (0 frames missing, 2 out of order)"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("order:       first out of order: seq wraps from 0 to "
+                          "18446744073709551615 at frame 2 of 3 (byte " +
+                          std::to_string(offset) + ")\n"),
+            std::string::npos)
+      << text.out;
+
+  const CommandRun json = run("info " + path.string() + " --format json");
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["missing_frames"], 0);
+  EXPECT_EQ(j["sequence_gaps"], 0);
+  EXPECT_EQ(j["sequence_disorders"], 2);
+  EXPECT_EQ(j["first_sequence_disorder"]["kind"], "wrap");
+  EXPECT_EQ(j["first_sequence_disorder"]["from_seq"], 0);
+  EXPECT_EQ(j["first_sequence_disorder"]["to_seq"], top);
+  EXPECT_EQ(j["first_sequence_disorder"]["frame"], 2);
+  EXPECT_EQ(j["first_sequence_disorder"]["offset"], offset);
 }
 
 TEST_F(VemtoolRecordingCli, NotARecordingGivesOneErrorLineAndFails) {

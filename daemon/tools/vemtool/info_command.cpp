@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -20,6 +21,26 @@ struct InfoOptions {
   std::string input;
   bool json = false;
 };
+
+// "seq goes back from 10 to 5 at frame 7 of 90 (byte 123456)" and the like.
+std::string disorderText(const recording::SequenceDisorder& d, std::uint64_t frames) {
+  const std::string where = fmt::format("at frame {} of {} (byte {})", d.frame, frames, d.offset);
+  switch (d.step) {
+    case recording::SequenceStep::Repeat: return fmt::format("seq {} repeats {}", d.toSeq, where);
+    case recording::SequenceStep::Wrap:
+      return fmt::format("seq wraps from {} to {} {}", d.fromSeq, d.toSeq, where);
+    default: return fmt::format("seq goes back from {} to {} {}", d.fromSeq, d.toSeq, where);
+  }
+}
+
+nlohmann::ordered_json disorderJson(const std::optional<recording::SequenceDisorder>& d) {
+  if (!d) return nullptr;
+  return {{"kind", recording::sequenceStepName(d->step)},
+          {"from_seq", d->fromSeq},
+          {"to_seq", d->toSeq},
+          {"frame", d->frame},
+          {"offset", d->offset}};
+}
 
 nlohmann::ordered_json summaryJson(const std::string& file, const recording::RecordingSummary& s) {
   const recording::RecordingHeader& h = s.header;
@@ -45,6 +66,7 @@ nlohmann::ordered_json summaryJson(const std::string& file, const recording::Rec
   j["sequence_gaps"] = s.sequenceGaps;
   j["missing_frames"] = s.missingFrames;
   j["sequence_disorders"] = s.sequenceDisorders;
+  j["first_sequence_disorder"] = disorderJson(s.firstDisorder);
   j["timestamp_gaps"] = s.timestampGaps;
   j["longest_interval_ns"] = s.longestIntervalNs;
   j["damaged_records"] = s.damage.damagedRecords;
@@ -81,6 +103,10 @@ std::string summaryText(const std::string& file, const recording::RecordingSumma
       "periods; longest interval {:.3f} ms)\n",
       s.sequenceGaps, s.missingFrames, s.sequenceDisorders, s.timestampGaps,
       double(s.longestIntervalNs) * 1e-6);
+  if (s.firstDisorder) {
+    t += fmt::format("order:       first out of order: {}\n",
+                     disorderText(*s.firstDisorder, s.frames));
+  }
   t += fmt::format(
       "damage:      {} damaged records ({} bytes skipped), truncated tail {} bytes, {} "
       "unknown records\n",
