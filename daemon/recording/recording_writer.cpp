@@ -55,11 +55,13 @@ std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
                                 : ": cannot create the recording (" + errnoText(error) + ")")});
   }
   RecordingWriter writer(path, std::move(fd), std::move(h), options);
-  if (auto written = writer.writeAtEnd(encodeHeaderRecord(writer.header_), "the header");
-      !written) {
+  if (auto written = writer.writeAtEnd(encodeHeaderRecord(writer.header_)); !written) {
     writer.fd_ = FileDescriptor();
     if (!options.replaceExisting) ::unlink(path.c_str());  // ours, and holding no frame
-    return std::unexpected(written.error());
+    // No frame can stay readable without a header: say that nothing was recorded.
+    return std::unexpected(RecordingFailure{
+        RecordingError::WriteFailed, name + ": cannot write the header (" +
+                                         errnoText(written.error()) + "); no recording was made"});
   }
   if (!syncData(writer.fd_.get())) {
     const int error = errno;
@@ -71,8 +73,7 @@ std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
   return writer;
 }
 
-std::expected<void, RecordingFailure> RecordingWriter::writeAtEnd(
-    const std::vector<std::byte>& bytes, const std::string& what) {
+std::expected<void, int> RecordingWriter::writeAtEnd(const std::vector<std::byte>& bytes) {
   std::size_t done = 0;
   int error = 0;
   // One pwrite() for the whole record; the loop only continues a write a signal interrupted
@@ -92,10 +93,13 @@ std::expected<void, RecordingFailure> RecordingWriter::writeAtEnd(
     return {};
   }
   if (done > 0) (void)::ftruncate(fd_.get(), off_t(end_));  // best effort: drop the partial record
-  return std::unexpected(RecordingFailure{
-      RecordingError::WriteFailed,
-      path_.string() + ": cannot write " + what + " (" + errnoText(error) + "); the " +
-          std::to_string(entries_.size()) + " frames before it stay readable"});
+  return std::unexpected(error);
+}
+
+RecordingFailure RecordingWriter::writeFailure(const std::string& what, int error) const {
+  return {RecordingError::WriteFailed,
+          path_.string() + ": cannot write " + what + " (" + errnoText(error) + "); the " +
+              std::to_string(entries_.size()) + " frames before it stay readable"};
 }
 
 std::string RecordingWriter::frameProblem(std::uint64_t seq, const calib::RawFrame& frame) const {
@@ -137,8 +141,9 @@ std::expected<void, RecordingFailure> RecordingWriter::append(std::uint64_t seq,
         path_.string() + ": cannot compress frame " + std::to_string(seq) + " (" + e.what() + ")"});
   }
   const std::uint64_t offset = end_;
-  auto written = writeAtEnd(record_, "frame " + std::to_string(seq));
-  if (!written) return written;
+  if (auto written = writeAtEnd(record_); !written) {
+    return std::unexpected(writeFailure("frame " + std::to_string(seq), written.error()));
+  }
   entries_.push_back({seq, captureTsNs, offset});
   if (options_.syncEveryFrames > 0 && ++framesSinceSync_ >= options_.syncEveryFrames) {
     framesSinceSync_ = 0;
@@ -158,8 +163,10 @@ std::expected<void, RecordingFailure> RecordingWriter::close() {
     return std::unexpected(
         RecordingFailure{RecordingError::Closed, path_.string() + ": the recording is closed"});
   }
-  std::expected<void, RecordingFailure> result =
-      writeAtEnd(encodeTrailer(entries_, end_), "the index");
+  std::expected<void, RecordingFailure> result;
+  if (auto written = writeAtEnd(encodeTrailer(entries_, end_)); !written) {
+    result = std::unexpected(writeFailure("the index", written.error()));
+  }
   if (result && !syncData(fd_.get())) {
     result = std::unexpected(RecordingFailure{
         RecordingError::WriteFailed,

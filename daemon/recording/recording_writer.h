@@ -63,8 +63,11 @@ class RecordingWriter {
  private:
   RecordingWriter(std::filesystem::path path, FileDescriptor fd, RecordingHeader header,
                   WriterOptions options);
-  [[nodiscard]] std::expected<void, RecordingFailure> writeAtEnd(
-      const std::vector<std::byte>& bytes, const std::string& what);
+  // Writes `bytes` after the last complete record; on failure cuts a partial write off again and
+  // gives the errno.
+  [[nodiscard]] std::expected<void, int> writeAtEnd(const std::vector<std::byte>& bytes);
+  // "cannot write `what` (cause); the N frames before it stay readable"
+  [[nodiscard]] RecordingFailure writeFailure(const std::string& what, int error) const;
   [[nodiscard]] std::string frameProblem(std::uint64_t seq, const calib::RawFrame& frame) const;
 
   std::filesystem::path path_;

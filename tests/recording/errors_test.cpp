@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -118,14 +120,43 @@ TEST_F(Errors, WriterRefusesToOverwriteAnExistingFile) {
   EXPECT_EQ(readBytes(path), before);
 }
 
-TEST_F(Errors, FullDiskGivesAWriteErrorValue) {
+// A header that cannot be written used to be reported with "the 0 frames before it stay
+// readable", though no recording was made (and none is left).
+TEST_F(Errors, HeaderWriteFailureSaysNoRecordingWasMade) {
   auto writer =
       recording::RecordingWriter::create("/dev/full", smallHeader(), {.replaceExisting = true});
   ASSERT_FALSE(writer);
   EXPECT_EQ(writer.error().cause, RecordingError::WriteFailed);
   EXPECT_EQ(writer.error().message,
-            "/dev/full: cannot write the header (No space left on device); the 0 frames before it "
-            "stay readable");
+            "/dev/full: cannot write the header (No space left on device); no recording was made");
+}
+
+// The same for a new file on a disk that cannot take its header (RLIMIT_FSIZE below the header's
+// size, in a child): the file the writer created is gone again and the sentence says so.
+TEST_F(Errors, HeaderThatDoesNotFitLeavesNoFileAndSaysNoRecordingWasMade) {
+  const fs::path path = dir_ / "tiny.vem";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    rlimit unlimited{};
+    ::getrlimit(RLIMIT_FSIZE, &unlimited);
+    const rlimit limit{64, unlimited.rlim_max};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    auto writer = recording::RecordingWriter::create(path, smallHeader());
+    if (writer) ::_exit(10);
+    ::setrlimit(RLIMIT_FSIZE, &unlimited);  // room again for the report
+    std::ofstream(dir_ / "message.txt") << writer.error().message;
+    ::_exit(writer.error().cause == RecordingError::WriteFailed ? 0 : 11);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  ASSERT_EQ(WEXITSTATUS(status), 0) << "10: the header was written; 11: another cause";
+  const std::vector<char> message = readBytes(dir_ / "message.txt");
+  EXPECT_EQ(std::string(message.begin(), message.end()),
+            path.string() + ": cannot write the header (File too large); no recording was made");
+  EXPECT_FALSE(fs::exists(path)) << "no file is left behind";
 }
 
 TEST_F(Errors, WriterNeverRewritesEarlierBytes) {
