@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "util/printable.h"
+
 namespace vem::vemd {
 
 namespace {
@@ -17,11 +19,21 @@ std::expected<std::unique_ptr<ReplaySource>, SourceError> ReplaySource::open(
   auto reader = recording::RecordingReader::open(path);
   if (!reader)
     return std::unexpected(SourceError{SourceErrorCause::NoDevice, reader.error().message});
-  return std::unique_ptr<ReplaySource>(new ReplaySource(std::move(*reader), options));
+  std::unique_ptr<ReplaySource> source(new ReplaySource(std::move(*reader), options));
+  // The first frame is read now: a recording without an intact frame fails the start-up with one
+  // sentence instead of ending the run at once as if it had been replayed.
+  if (auto first = source->readNext(); !first) {
+    return std::unexpected(SourceError{SourceErrorCause::NoDevice, first.error().message});
+  }
+  source->frameRead_ = true;
+  return source;
 }
 
 ReplaySource::ReplaySource(recording::RecordingReader reader, const ReplayOptions& options)
-    : reader_(std::move(reader)), options_(options), schedule_(schedulePeriodNs(options.rate)) {}
+    : reader_(std::move(reader)),
+      options_(options),
+      name_(util::printable(reader_.path().string())),
+      schedule_(schedulePeriodNs(options.rate)) {}
 
 SourceDescription ReplaySource::describe() const {
   const recording::RecordingHeader& h = reader_.header();
@@ -42,14 +54,18 @@ SourceDescription ReplaySource::describe() const {
 
 std::expected<CapturedFrame, SourceError> ReplaySource::next() {
   if (!frameWaiting_) {
-    if (auto read = readNext(); !read) return std::unexpected(read.error());
+    if (frameRead_) {
+      frameRead_ = false;  // the first frame, read by open()
+    } else if (auto read = readNext(); !read) {
+      return std::unexpected(read.error());
+    }
     frameWaiting_ = true;
     waitingDueNs_ = schedule_.dueNs(recorded_.captureTsNs + tsShiftNs_, monotonicNowNs());
   }
   if (!pacer_.sleepUntil(waitingDueNs_)) {
-    return std::unexpected(SourceError{
-        SourceErrorCause::Timeout,
-        fmt::format("{}: interrupted while waiting for the next frame", reader_.path().string())});
+    return std::unexpected(
+        SourceError{SourceErrorCause::Timeout,
+                    fmt::format("{}: interrupted while waiting for the next frame", name_)});
   }
   frameWaiting_ = false;
   CapturedFrame out;
@@ -90,16 +106,18 @@ std::expected<bool, SourceError> ReplaySource::readNext() {
       ++framesThisLap_;
       return true;
     }
-    const std::string path = reader_.path().string();
     if (framesThisLap_ == 0) {
-      return std::unexpected(
-          SourceError{SourceErrorCause::EndOfStream,
-                      fmt::format("{}: the recording holds no intact frame", path)});
+      const recording::DamageStats& damage = reader_.damage();
+      return std::unexpected(SourceError{
+          SourceErrorCause::EndOfStream,
+          fmt::format("{}: the recording holds no intact frame (damaged records: {}, truncated "
+                      "tail: {} bytes), so there is nothing to replay",
+                      name_, damage.damagedRecords, damage.truncatedTailBytes)});
     }
     if (!options_.loop) {
       return std::unexpected(
           SourceError{SourceErrorCause::EndOfStream,
-                      fmt::format("{}: end of the recording ({} frames)", path, framesThisLap_)});
+                      fmt::format("{}: end of the recording ({} frames)", name_, framesThisLap_)});
     }
     startNextLap();
   }

@@ -1,6 +1,8 @@
 // ReplaySource: a VEM recording (docs/vem-format.md) played back as a frame source, bit for bit:
 // the codes, exposure and gain as recorded, so replaying gives the lights the live run gave.
 //
+// - Opening reads the first intact frame: a recording that holds none is refused then, in one
+//   sentence naming the file, rather than replayed as an empty run.
 // - Pace (SourceRate): "recorded" keeps the recording's timestamp spacing, a number of Hz a fixed
 //   period, "max" none at all (the daemon then takes frames as fast as it processes them).
 // - Loop: at the end the recording starts again; seq and captureTsNs keep increasing across laps
@@ -55,10 +57,12 @@ class ReplaySource final : public FrameSource {
 
   recording::RecordingReader reader_;
   ReplayOptions options_;
+  std::string name_;  // the file's name, printable (util/printable.h), for messages
   recording::RecordedFrame recorded_;
   std::vector<std::vector<std::uint16_t>> spareCodes_;
   Pacer pacer_;
   FrameSchedule schedule_;
+  bool frameRead_ = false;     // recorded_ holds the first frame, read by open()
   bool frameWaiting_ = false;  // recorded_ holds a frame read before an interrupted wait
   std::int64_t waitingDueNs_ = 0;
 

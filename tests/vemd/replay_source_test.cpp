@@ -2,7 +2,14 @@
 // interrupts, and the end of a recording.
 #include "vemd/replay_source.h"
 
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
+
+#include "recording/recording_reader.h"
 
 #include "vemd_fixtures.h"
 
@@ -110,15 +117,47 @@ TEST_F(ReplaySourceFiles, InterruptBeforeTheWaitIsNotLost) {
   EXPECT_EQ(frame.error().cause, vemd::SourceErrorCause::Timeout);
 }
 
-TEST_F(ReplaySourceFiles, RecordingWithoutFramesEndsAtOnceEvenWhenLooping) {
-  const fs::path path = dir_ / "empty.vem";
-  writeSkyRecording(path, 0, false);
-  auto source = openReplay(path, kMax, true);
-  ASSERT_TRUE(source);
-  auto frame = source->next();
-  ASSERT_FALSE(frame);
-  EXPECT_EQ(frame.error().cause, vemd::SourceErrorCause::EndOfStream);
-  EXPECT_EQ(frame.error().message, path.string() + ": the recording holds no intact frame");
+// Every frame record of `path` damaged (one byte flipped inside each); the index stays intact.
+void damageEveryFrame(const fs::path& path) {
+  std::vector<std::uint64_t> offsets;
+  {
+    auto reader = recording::RecordingReader::open(path);
+    ASSERT_TRUE(reader && reader->hasIndex());
+    for (const recording::IndexEntry& entry : reader->index()) offsets.push_back(entry.offset);
+  }
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  for (const std::uint64_t offset : offsets) {
+    file.seekg(std::streamoff(offset + 100));
+    char byte = 0;
+    file.read(&byte, 1);
+    byte = char(byte ^ 0x40);
+    file.seekp(std::streamoff(offset + 100));
+    file.write(&byte, 1);
+  }
+  ASSERT_TRUE(file.good());
+}
+
+// A recording with a valid header but no intact frame opened and then ended at once, so vemd
+// "replayed" it and exited 0. It is refused when it is opened, in one sentence naming the file.
+TEST_F(ReplaySourceFiles, RecordingWithNoIntactFrameIsRefusedAtOpen) {
+  const fs::path empty = dir_ / "empty.vem";
+  writeSkyRecording(empty, 0, false);
+  const fs::path damaged = dir_ / "damaged.vem";
+  writeSkyRecording(damaged, 3, false);
+  damageEveryFrame(damaged);
+  const std::vector<std::pair<fs::path, std::string>> cases{{empty, "damaged records: 0"},
+                                                            {damaged, "damaged records: 1"}};
+  for (const auto& [path, damage] : cases) {
+    for (const bool loop : {false, true}) {
+      auto source = vemd::ReplaySource::open(path, {kMax, loop});
+      ASSERT_FALSE(source) << path << (loop ? " looping" : "");
+      EXPECT_EQ(source.error().cause, vemd::SourceErrorCause::NoDevice);
+      EXPECT_EQ(source.error().message, path.string() + ": the recording holds no intact frame (" +
+                                            damage +
+                                            ", truncated tail: 0 bytes), so there is nothing "
+                                            "to replay");
+    }
+  }
 }
 
 }  // namespace

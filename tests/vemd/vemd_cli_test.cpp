@@ -230,6 +230,36 @@ TEST_F(VemdCli, BadFlagExitsWithUsageStatus) {
       << r.err;
 }
 
+// `vemd --source replay:F.vem` on a recording with a valid header and no intact frame exited 0
+// as if it had replayed it. It fails at start with one sentence naming the file.
+TEST_F(VemdCli, ReplayOfARecordingWithNoIntactFrameExitsNonZeroNamingTheFile) {
+  const fs::path empty = dir_ / "empty.vem";
+  writeSkyRecording(empty, 0, false);
+  const fs::path damaged = dir_ / "damaged.vem";
+  writeSkyRecording(damaged, 2, false);
+  {
+    std::vector<std::uint64_t> offsets;
+    auto reader = recording::RecordingReader::open(damaged);
+    ASSERT_TRUE(reader && reader->hasIndex());
+    for (const recording::IndexEntry& entry : reader->index()) offsets.push_back(entry.offset);
+    std::fstream file(damaged, std::ios::in | std::ios::out | std::ios::binary);
+    for (const std::uint64_t offset : offsets) {
+      file.seekp(std::streamoff(offset + 12));  // the CRC field: the record no longer checks
+      file.write("\xff\xff\xff\xff", 4);
+    }
+    ASSERT_TRUE(file.good());
+  }
+  for (const fs::path& path : {empty, damaged}) {
+    const CommandRun r = run("--source replay:" + path.string() + " --rate max --stats-every 0");
+    EXPECT_EQ(r.exitCode, 1) << path << "\n" << r.err;
+    EXPECT_NE(r.err.find("error: " + path.string() +
+                         ": the recording holds no intact frame (damaged records: "),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("final "), std::string::npos) << "no run was started: " << r.err;
+  }
+}
+
 TEST_F(VemdCli, RecordingFromAnotherCameraIsRefusedAtStart) {
   // A recording whose calibration is for another sensor size cannot be calibrated.
   recording::RecordingHeader header = smallRecordingHeader();
