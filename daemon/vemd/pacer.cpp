@@ -21,22 +21,27 @@ void Pacer::interrupt() {
   wake_.notify_all();
 }
 
-std::int64_t FrameSchedule::dueNs(std::int64_t captureTsNs, std::int64_t nowNs) {
-  if (periodNs_ < 0) return nowNs;
-  if (!anchored_) {
-    anchored_ = true;
-    originMonoNs_ = nowNs;
-    originTsNs_ = captureTsNs;
-    framesSinceOrigin_ = 0;
+FrameDue FrameSchedule::next(std::int64_t captureTsNs, std::int64_t nowNs) {
+  if (periodNs_ < 0) return {nowNs, std::nullopt};
+  FrameDue due{nowNs, std::nullopt};
+  if (started_) {
+    due.dueNs = previousDueNs_ + stepNs(captureTsNs, due.jump);
+    if (nowNs - due.dueNs > kMaxLagNs) due.dueNs = nowNs;  // a stall: start again from now
   }
-  const std::int64_t due = periodNs_ > 0 ? originMonoNs_ + framesSinceOrigin_ * periodNs_
-                                         : originMonoNs_ + (captureTsNs - originTsNs_);
-  if (nowNs - due > kMaxLagNs) {
-    anchored_ = false;
-    return dueNs(captureTsNs, nowNs);
-  }
-  ++framesSinceOrigin_;
+  started_ = true;
+  previousDueNs_ = due.dueNs;
+  previousTsNs_ = captureTsNs;
   return due;
+}
+
+std::int64_t FrameSchedule::stepNs(std::int64_t captureTsNs,
+                                   std::optional<TimestampJump>& jump) const {
+  if (periodNs_ > 0) return periodNs_;
+  std::int64_t intervalNs = 0;
+  const bool overflow = __builtin_sub_overflow(captureTsNs, previousTsNs_, &intervalNs);
+  if (!overflow && intervalNs >= 0 && intervalNs <= kMaxRecordedIntervalNs) return intervalNs;
+  jump = TimestampJump{previousTsNs_, captureTsNs};
+  return standInPeriodNs_;
 }
 
 }  // namespace vem::vemd

@@ -1,9 +1,11 @@
 #include "vemd/replay_source.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include "util/printable.h"
 
@@ -12,6 +14,25 @@ namespace vem::vemd {
 namespace {
 constexpr std::int64_t kFallbackPeriodNs = 33'333'333;  // 30 frames/s when nothing says better
 constexpr std::size_t kMaxSpareBuffers = 8;
+
+// a + b and a - b modulo 2^64: hostile capture times (near the ends of int64) shift without
+// undefined behaviour; the schedule then sees an absurd step and does not wait for it.
+std::int64_t wrappingAdd(std::int64_t a, std::int64_t b) {
+  return std::int64_t(std::uint64_t(a) + std::uint64_t(b));
+}
+std::int64_t wrappingSub(std::int64_t a, std::int64_t b) {
+  return std::int64_t(std::uint64_t(a) - std::uint64_t(b));
+}
+
+// The header's frame period (at least 1 ns, at most the longest step a schedule follows), else
+// 30 frames/s.
+std::int64_t nominalPeriodNs(const recording::RecordingHeader& header) {
+  const double rateHz = header.nominalRateHz;
+  if (!(rateHz > 0.0) || !std::isfinite(rateHz)) return kFallbackPeriodNs;
+  return std::clamp<std::int64_t>(std::llround(std::min(1e9 / rateHz, 1e18)), 1,
+                                  FrameSchedule::kMaxRecordedIntervalNs);
+}
+
 }  // namespace
 
 std::expected<std::unique_ptr<ReplaySource>, SourceError> ReplaySource::open(
@@ -33,7 +54,7 @@ ReplaySource::ReplaySource(recording::RecordingReader reader, const ReplayOption
     : reader_(std::move(reader)),
       options_(options),
       name_(util::printable(reader_.path().string())),
-      schedule_(schedulePeriodNs(options.rate)) {}
+      schedule_(schedulePeriodNs(options.rate), nominalPeriodNs(reader_.header())) {}
 
 SourceDescription ReplaySource::describe() const {
   const recording::RecordingHeader& h = reader_.header();
@@ -60,7 +81,10 @@ std::expected<CapturedFrame, SourceError> ReplaySource::next() {
       return std::unexpected(read.error());
     }
     frameWaiting_ = true;
-    waitingDueNs_ = schedule_.dueNs(recorded_.captureTsNs + tsShiftNs_, monotonicNowNs());
+    const FrameDue due =
+        schedule_.next(wrappingAdd(recorded_.captureTsNs, tsShiftNs_), monotonicNowNs());
+    reportJump(due.jump);
+    waitingDueNs_ = due.dueNs;
   }
   if (!pacer_.sleepUntil(waitingDueNs_)) {
     return std::unexpected(
@@ -71,9 +95,28 @@ std::expected<CapturedFrame, SourceError> ReplaySource::next() {
   CapturedFrame out;
   out.frame = std::move(recorded_.frame);
   out.seq = recorded_.seq + seqShift_;
-  out.captureTsNs = recorded_.captureTsNs + tsShiftNs_;
+  out.captureTsNs = wrappingAdd(recorded_.captureTsNs, tsShiftNs_);
   out.arrivalNs = monotonicNowNs();
   return out;
+}
+
+void ReplaySource::reportJump(const std::optional<TimestampJump>& jump) {
+  if (jump) {
+    if (jumpsInARow_++ == 0) {
+      spdlog::warn(
+          "{}: the capture time jumps from {} ns to {} ns before frame {} (expected a step of 0 to "
+          "{} s); replaying that step as one frame period ({:.3f} ms) instead of waiting it out "
+          "(further jumps are counted, not logged, until the capture times are regular again)",
+          name_, jump->fromTsNs, jump->toTsNs, recorded_.seq + seqShift_,
+          FrameSchedule::kMaxRecordedIntervalNs / 1'000'000'000,
+          double(nominalPeriodNs(reader_.header())) * 1e-6);
+    }
+    return;
+  }
+  if (jumpsInARow_ == 0) return;
+  spdlog::info("{}: capture times regular again after {} jump(s) replayed as one frame period each",
+               name_, jumpsInARow_);
+  jumpsInARow_ = 0;
 }
 
 void ReplaySource::recycle(CapturedFrame&& spent) {
@@ -126,7 +169,8 @@ std::expected<bool, SourceError> ReplaySource::readNext() {
 
 void ReplaySource::startNextLap() {
   seqShift_ += lastSeq_ - firstSeq_ + 1;
-  tsShiftNs_ += lastTsNs_ - firstTsNs_ + lapPeriodNs();
+  tsShiftNs_ =
+      wrappingAdd(tsShiftNs_, wrappingAdd(wrappingSub(lastTsNs_, firstTsNs_), lapPeriodNs()));
   damagedBeforeLap_ += reader_.damage().damagedRecords;
   reader_.rewind();
   framesThisLap_ = 0;
@@ -134,10 +178,10 @@ void ReplaySource::startNextLap() {
 }
 
 std::int64_t ReplaySource::lapPeriodNs() const {
-  const double rateHz = reader_.header().nominalRateHz;
-  if (rateHz > 0.0) return std::llround(1e9 / rateHz);
-  if (framesThisLap_ > 1 && lastTsNs_ > firstTsNs_) {
-    return (lastTsNs_ - firstTsNs_) / std::int64_t(framesThisLap_ - 1);
+  if (reader_.header().nominalRateHz > 0.0) return nominalPeriodNs(reader_.header());
+  std::int64_t spanNs = 0;
+  if (framesThisLap_ > 1 && !__builtin_sub_overflow(lastTsNs_, firstTsNs_, &spanNs) && spanNs > 0) {
+    return spanNs / std::int64_t(framesThisLap_ - 1);
   }
   return kFallbackPeriodNs;
 }

@@ -4,7 +4,10 @@
 // - Opening reads the first intact frame: a recording that holds none is refused then, in one
 //   sentence naming the file, rather than replayed as an empty run.
 // - Pace (SourceRate): "recorded" keeps the recording's timestamp spacing, a number of Hz a fixed
-//   period, "max" none at all (the daemon then takes frames as fast as it processes them).
+//   period, "max" none at all (the daemon then takes frames as fast as it processes them). At the
+//   recorded pace a capture time that jumps back, or ahead by more than 10 s, is replayed as one
+//   nominal frame period (FrameSchedule); the first of a run of such jumps is logged as a warning,
+//   and the end of the run with their count.
 // - Loop: at the end the recording starts again; seq and captureTsNs keep increasing across laps
 //   (each lap is shifted to follow the previous one by one frame period), so the temporal filter
 //   sees one continuous stream. Without loop the end is EndOfStream.
@@ -19,6 +22,7 @@
 #include <expected>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +56,8 @@ class ReplaySource final : public FrameSource {
   ReplaySource(recording::RecordingReader reader, const ReplayOptions& options);
   // Reads the next frame into recorded_, starting a new lap at the end when looping.
   [[nodiscard]] std::expected<bool, SourceError> readNext();
+  // Logs the first of a run of capture-time jumps, and the end of the run with its count.
+  void reportJump(const std::optional<TimestampJump>& jump);
   void startNextLap();
   [[nodiscard]] std::int64_t lapPeriodNs() const;
 
@@ -65,6 +71,7 @@ class ReplaySource final : public FrameSource {
   bool frameRead_ = false;     // recorded_ holds the first frame, read by open()
   bool frameWaiting_ = false;  // recorded_ holds a frame read before an interrupted wait
   std::int64_t waitingDueNs_ = 0;
+  std::uint64_t jumpsInARow_ = 0;  // capture-time jumps since the last regular step
 
   // Laps: the first and last frame of the lap so far (recording's numbers) and the shift of the
   // current lap.

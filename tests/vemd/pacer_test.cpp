@@ -1,4 +1,7 @@
 // FrameSchedule (when frames are due) and LoopStatistics (what the reports say): pure, no clock.
+#include <cstdint>
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "vemd/loop_statistics.h"
@@ -35,6 +38,55 @@ TEST(FrameSchedule, MaxRateIsAlwaysDueNow) {
   FrameSchedule schedule(schedulePeriodNs({SourceRate::Mode::Max, 0.0}));
   EXPECT_EQ(schedule.dueNs(123, 77), 77);
   EXPECT_EQ(schedule.dueNs(0, 99), 99);
+}
+
+// A capture time of 1e18 ns after 0 made `--rate recorded` wait about 31 years. The step is
+// replayed as one nominal period, said so, and the frames after it keep their own spacing.
+TEST(FrameSchedule, CaptureTimeJumpOf1e18NsIsReplayedAsOneNominalPeriod) {
+  FrameSchedule schedule(0, 33'333'333);
+  EXPECT_EQ(schedule.next(0, 100).dueNs, 100);
+  const FrameDue jumped = schedule.next(1'000'000'000'000'000'000, 200);
+  EXPECT_EQ(jumped.dueNs, 100 + 33'333'333);
+  EXPECT_EQ(jumped.jump, (TimestampJump{0, 1'000'000'000'000'000'000}));
+  const FrameDue after = schedule.next(1'000'000'000'040'000'000, 300);
+  EXPECT_EQ(after.dueNs, 100 + 33'333'333 + 40'000'000);
+  EXPECT_FALSE(after.jump);
+}
+
+// A capture time going back was due at once (and unreported); now it takes one nominal period.
+TEST(FrameSchedule, CaptureTimeGoingBackIsReplayedAsOneNominalPeriod) {
+  FrameSchedule schedule(0, 20'000'000);
+  EXPECT_EQ(schedule.next(5'000'000'000, 0).dueNs, 0);
+  const FrameDue back = schedule.next(4'000'000'000, 10);
+  EXPECT_EQ(back.dueNs, 20'000'000);
+  EXPECT_EQ(back.jump, (TimestampJump{5'000'000'000, 4'000'000'000}));
+  EXPECT_EQ(schedule.next(4'010'000'000, 20).dueNs, 30'000'000);
+}
+
+TEST(FrameSchedule, StepOfTenSecondsIsWaitedAndOneNanosecondMoreIsAJump) {
+  FrameSchedule schedule(0, 1'000'000);
+  EXPECT_EQ(schedule.next(0, 0).dueNs, 0);
+  const FrameDue longest = schedule.next(FrameSchedule::kMaxRecordedIntervalNs, 0);
+  EXPECT_EQ(longest.dueNs, FrameSchedule::kMaxRecordedIntervalNs);
+  EXPECT_FALSE(longest.jump);
+  const FrameDue tooLong = schedule.next(2 * FrameSchedule::kMaxRecordedIntervalNs + 1, 0);
+  EXPECT_EQ(tooLong.dueNs, FrameSchedule::kMaxRecordedIntervalNs + 1'000'000);
+  EXPECT_TRUE(tooLong.jump);
+}
+
+// The difference of the two ends of int64 overflowed (undefined behaviour, in practice -1: due
+// at once); it is a jump like any other.
+TEST(FrameSchedule, CaptureTimesAtTheEndsOfInt64DoNotOverflow) {
+  constexpr std::int64_t kMin = std::numeric_limits<std::int64_t>::min();
+  constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+  FrameSchedule schedule(0, 1'000'000);
+  EXPECT_EQ(schedule.next(kMin, 5).dueNs, 5);
+  const FrameDue up = schedule.next(kMax, 6);
+  EXPECT_EQ(up.dueNs, 1'000'005);
+  EXPECT_EQ(up.jump, (TimestampJump{kMin, kMax}));
+  const FrameDue down = schedule.next(kMin, 7);
+  EXPECT_EQ(down.dueNs, 2'000'005);
+  EXPECT_TRUE(down.jump);
 }
 
 TEST(SourceRate, PeriodOfAFixedRate) {

@@ -2,12 +2,19 @@
 // interrupts, and the end of a recording.
 #include "vemd/replay_source.h"
 
+#include <chrono>
+#include <condition_variable>
 #include <fstream>
+#include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ringbuffer_sink.h>
+#include <spdlog/spdlog.h>
 
 #include "recording/recording_reader.h"
 
@@ -158,6 +165,104 @@ TEST_F(ReplaySourceFiles, RecordingWithNoIntactFrameIsRefusedAtOpen) {
                                             "to replay");
     }
   }
+}
+
+// Log lines of the default logger while it lives, as "level|message".
+class CapturedLog {
+ public:
+  CapturedLog()
+      : ring_(std::make_shared<spdlog::sinks::ringbuffer_sink_mt>(64)),
+        previous_(spdlog::default_logger()) {
+    auto logger = std::make_shared<spdlog::logger>("test", ring_);
+    logger->set_pattern("%l|%v");
+    spdlog::set_default_logger(logger);
+  }
+  ~CapturedLog() { spdlog::set_default_logger(previous_); }
+  CapturedLog(const CapturedLog&) = delete;
+  CapturedLog& operator=(const CapturedLog&) = delete;
+
+  [[nodiscard]] std::vector<std::string> lines() const {
+    std::vector<std::string> lines = ring_->last_formatted();
+    for (std::string& line : lines) {
+      if (line.ends_with('\n')) line.pop_back();
+    }
+    return lines;
+  }
+
+ private:
+  std::shared_ptr<spdlog::sinks::ringbuffer_sink_mt> ring_;
+  std::shared_ptr<spdlog::logger> previous_;
+};
+
+// Capture times 0, 1e18, 2e18, 3e18 ns made `--rate recorded` wait about 31 years per frame,
+// silently. Each jump now takes one nominal period (1 ms at this header's 1000 Hz); the first of
+// the run is a warning, the end of the run says how many there were, nothing is logged per frame.
+TEST_F(ReplaySourceFiles, AbsurdCaptureTimesAreNotWaitedOutAndWarnedOncePerRun) {
+  recording::RecordingHeader header = smallRecordingHeader();
+  header.nominalRateHz = 1000.0;
+  const fs::path path = dir_ / "jumps.vem";
+  const std::vector<std::int64_t> stamps{0,
+                                         1'000'000'000'000'000'000,
+                                         2'000'000'000'000'000'000,
+                                         3'000'000'000'000'000'000,
+                                         3'000'000'000'001'000'000,
+                                         3'000'000'000'002'000'000};
+  {
+    auto writer = recording::RecordingWriter::create(path, header);
+    ASSERT_TRUE(writer) << writer.error().message;
+    for (std::size_t i = 0; i < stamps.size(); ++i) {
+      ASSERT_TRUE(writer->append(i, stamps[i], cachedSkyFrame(int(i))));
+    }
+    ASSERT_TRUE(writer->close());
+  }
+  const CapturedLog log;
+  auto source = openReplay(path, {SourceRate::Mode::Recorded, 0.0}, false);
+  ASSERT_TRUE(source);
+
+  // A wait that is not skipped is cut short after a generous bound, so the test fails instead of
+  // hanging for years.
+  std::mutex mutex;
+  std::condition_variable done;
+  bool finished = false;
+  std::thread watchdog([&] {
+    std::unique_lock lock(mutex);
+    if (!done.wait_for(lock, std::chrono::seconds(30), [&] { return finished; })) {
+      source->interrupt();
+    }
+  });
+  std::vector<std::int64_t> delivered;
+  for (std::size_t i = 0; i < stamps.size(); ++i) {
+    auto frame = source->next();
+    if (!frame) {
+      ADD_FAILURE() << "frame " << i << ": " << frame.error().message;
+      break;
+    }
+    delivered.push_back(frame->captureTsNs);
+  }
+  {
+    std::lock_guard lock(mutex);
+    finished = true;
+  }
+  done.notify_all();
+  watchdog.join();
+  EXPECT_EQ(delivered, stamps) << "the frames keep their recorded capture times";
+
+  std::vector<std::string> warnings, infos;
+  for (const std::string& line : log.lines()) {
+    if (line.starts_with("warning|")) warnings.push_back(line);
+    if (line.starts_with("info|")) infos.push_back(line);
+  }
+  ASSERT_EQ(warnings.size(), 1U) << ::testing::PrintToString(log.lines());
+  EXPECT_EQ(warnings[0],
+            "warning|" + path.string() +
+                ": the capture time jumps from 0 ns to 1000000000000000000 ns before frame 1 "
+                "(expected a step of 0 to 10 s); replaying that step as one frame period (1.000 "
+                "ms) instead of waiting it out (further jumps are counted, not logged, until the "
+                "capture times are regular again)");
+  ASSERT_EQ(infos.size(), 1U) << ::testing::PrintToString(log.lines());
+  EXPECT_EQ(infos[0], "info|" + path.string() +
+                          ": capture times regular again after 3 jump(s) replayed as one frame "
+                          "period each");
 }
 
 }  // namespace
