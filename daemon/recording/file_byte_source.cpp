@@ -7,19 +7,22 @@
 #include <cerrno>
 #include <cstring>
 
+#include "util/printable.h"
+
 namespace vem::recording {
 
 std::expected<FileByteSource, RecordingFailure> FileByteSource::open(
     const std::filesystem::path& path) {
-  const std::string name = path.string();
+  const std::string name = util::printable(path.string());
   FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (!fd.valid()) {
     const int error = errno;
     if (error == ENOENT) {
       return std::unexpected(RecordingFailure{RecordingError::NotFound, name + ": no such file"});
     }
-    return std::unexpected(RecordingFailure{
-        RecordingError::Unreadable, name + ": cannot open the file (" + std::strerror(error) + ")"});
+    return std::unexpected(
+        RecordingFailure{RecordingError::Unreadable,
+                         name + ": cannot open the file (" + std::strerror(error) + ")"});
   }
   struct stat info {};
   if (::fstat(fd.get(), &info) != 0 || !S_ISREG(info.st_mode)) {

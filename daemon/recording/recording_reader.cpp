@@ -4,6 +4,7 @@
 #include <string>
 
 #include "recording/file_byte_source.h"
+#include "util/printable.h"
 
 namespace vem::recording {
 namespace {
@@ -18,8 +19,9 @@ RecordingFailure openFailure(const std::string& name, OpenStatus status,
               name + ": not a VEM recording (expected the record magic 8a 56 45 4d at its start)"};
     case OpenStatus::DamagedHeader:
       return {RecordingError::BadHeader,
-              name + ": the header record is damaged or incomplete (its CRC32C or length does "
-                     "not check), so the frames cannot be interpreted"};
+              name +
+                  ": the header record is damaged or incomplete (its CRC32C or length does "
+                  "not check), so the frames cannot be interpreted"};
     case OpenStatus::UnknownVersion:
       return {RecordingError::UnknownVersion,
               name + ": VEM format version " + std::to_string(cursor.header().formatVersion) +
@@ -33,8 +35,7 @@ RecordingFailure openFailure(const std::string& name, OpenStatus status,
                        : cursor.headerProblem()) +
                   ")"};
     case OpenStatus::IoError:
-    case OpenStatus::Ok:
-      break;
+    case OpenStatus::Ok: break;
   }
   return {RecordingError::Unreadable,
           name + ": cannot read the file (" + std::strerror(ioErrno) + ")"};
@@ -56,14 +57,14 @@ std::expected<RecordingReader, RecordingFailure> RecordingReader::open(
   reader.cursor_ = std::make_unique<RecordingCursor>(*reader.source_, limits);
   const OpenStatus status = reader.cursor_->open();
   if (status != OpenStatus::Ok) {
-    return std::unexpected(
-        openFailure(path.string(), status, *reader.cursor_, reader.source_->lastError()));
+    return std::unexpected(openFailure(util::printable(path.string()), status, *reader.cursor_,
+                                       reader.source_->lastError()));
   }
   return reader;
 }
 
 RecordingFailure RecordingReader::readFailure() const {
-  return {RecordingError::Unreadable, path_.string() + ": cannot read the file (" +
+  return {RecordingError::Unreadable, util::printable(path_.string()) + ": cannot read the file (" +
                                           std::strerror(source_->lastError()) + ")"};
 }
 
@@ -75,12 +76,9 @@ void RecordingReader::rewind() { cursor_->rewind(); }
 
 std::expected<bool, RecordingFailure> RecordingReader::next(RecordedFrame& frame) {
   switch (cursor_->next(frame)) {
-    case ReadStep::Frame:
-      return true;
-    case ReadStep::End:
-      return false;
-    case ReadStep::IoError:
-      break;
+    case ReadStep::Frame: return true;
+    case ReadStep::End: return false;
+    case ReadStep::IoError: break;
   }
   return std::unexpected(readFailure());
 }
@@ -95,12 +93,9 @@ std::expected<std::optional<RecordedFrame>, RecordingFailure> RecordingReader::n
 
 std::expected<bool, RecordingFailure> RecordingReader::seek(std::uint64_t seq) {
   switch (cursor_->seek(seq)) {
-    case SeekStep::Found:
-      return true;
-    case SeekStep::NotFound:
-      return false;
-    case SeekStep::IoError:
-      break;
+    case SeekStep::Found: return true;
+    case SeekStep::NotFound: return false;
+    case SeekStep::IoError: break;
   }
   return std::unexpected(readFailure());
 }

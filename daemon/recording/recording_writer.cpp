@@ -8,6 +8,8 @@
 #include <exception>
 #include <string>
 
+#include "util/printable.h"
+
 namespace vem::recording {
 namespace {
 
@@ -24,6 +26,7 @@ bool syncData(int fd) {
 RecordingWriter::RecordingWriter(std::filesystem::path path, FileDescriptor fd,
                                  RecordingHeader header, WriterOptions options)
     : path_(std::move(path)),
+      name_(util::printable(path_.string())),
       fd_(std::move(fd)),
       header_(std::move(header)),
       options_(options),
@@ -38,7 +41,7 @@ RecordingWriter::~RecordingWriter() {
 
 std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
     const std::filesystem::path& path, const RecordingHeader& header, WriterOptions options) {
-  const std::string name = path.string();
+  const std::string name = util::printable(path.string());
   RecordingHeader h = header;
   h.formatVersion = kFormatVersion;
   if (const std::string problem = headerProblem(h, ReadLimits{}); !problem.empty()) {
@@ -97,9 +100,9 @@ std::expected<void, int> RecordingWriter::writeAtEnd(const std::vector<std::byte
 }
 
 RecordingFailure RecordingWriter::writeFailure(const std::string& what, int error) const {
-  return {RecordingError::WriteFailed,
-          path_.string() + ": cannot write " + what + " (" + errnoText(error) + "); the " +
-              std::to_string(entries_.size()) + " frames before it stay readable"};
+  return {RecordingError::WriteFailed, name_ + ": cannot write " + what + " (" + errnoText(error) +
+                                           "); the " + std::to_string(entries_.size()) +
+                                           " frames before it stay readable"};
 }
 
 std::string RecordingWriter::frameProblem(std::uint64_t seq, const calib::RawFrame& frame) const {
@@ -127,18 +130,18 @@ std::expected<void, RecordingFailure> RecordingWriter::append(std::uint64_t seq,
                                                               const LightSet* lights) {
   if (!fd_.valid()) {
     return std::unexpected(RecordingFailure{
-        RecordingError::Closed, path_.string() + ": cannot append a frame to a closed recording"});
+        RecordingError::Closed, name_ + ": cannot append a frame to a closed recording"});
   }
   if (const std::string problem = frameProblem(seq, frame); !problem.empty()) {
-    return std::unexpected(RecordingFailure{
-        RecordingError::InvalidFrame, path_.string() + ": cannot record the frame: " + problem});
+    return std::unexpected(RecordingFailure{RecordingError::InvalidFrame,
+                                            name_ + ": cannot record the frame: " + problem});
   }
   try {
     codec_.encodeRecord(seq, captureTsNs, frame, lights, record_);
   } catch (const std::exception& e) {
     return std::unexpected(RecordingFailure{
         RecordingError::WriteFailed,
-        path_.string() + ": cannot compress frame " + std::to_string(seq) + " (" + e.what() + ")"});
+        name_ + ": cannot compress frame " + std::to_string(seq) + " (" + e.what() + ")"});
   }
   const std::uint64_t offset = end_;
   if (auto written = writeAtEnd(record_); !written) {
@@ -149,10 +152,9 @@ std::expected<void, RecordingFailure> RecordingWriter::append(std::uint64_t seq,
     framesSinceSync_ = 0;
     if (!syncData(fd_.get())) {
       const int error = errno;
-      return std::unexpected(
-          RecordingFailure{RecordingError::WriteFailed, path_.string() + ": cannot flush frame " +
-                                                            std::to_string(seq) + " to disk (" +
-                                                            errnoText(error) + ")"});
+      return std::unexpected(RecordingFailure{
+          RecordingError::WriteFailed, name_ + ": cannot flush frame " + std::to_string(seq) +
+                                           " to disk (" + errnoText(error) + ")"});
     }
   }
   return {};
@@ -161,7 +163,7 @@ std::expected<void, RecordingFailure> RecordingWriter::append(std::uint64_t seq,
 std::expected<void, RecordingFailure> RecordingWriter::close() {
   if (!fd_.valid()) {
     return std::unexpected(
-        RecordingFailure{RecordingError::Closed, path_.string() + ": the recording is closed"});
+        RecordingFailure{RecordingError::Closed, name_ + ": the recording is closed"});
   }
   std::expected<void, RecordingFailure> result;
   if (auto written = writeAtEnd(encodeTrailer(entries_, end_)); !written) {
@@ -170,12 +172,12 @@ std::expected<void, RecordingFailure> RecordingWriter::close() {
   if (result && !syncData(fd_.get())) {
     result = std::unexpected(RecordingFailure{
         RecordingError::WriteFailed,
-        path_.string() + ": cannot flush the recording to disk (" + errnoText(errno) + ")"});
+        name_ + ": cannot flush the recording to disk (" + errnoText(errno) + ")"});
   }
   if (!fd_.close() && result) {
-    result = std::unexpected(RecordingFailure{
-        RecordingError::WriteFailed,
-        path_.string() + ": cannot close the recording (" + errnoText(errno) + ")"});
+    result = std::unexpected(
+        RecordingFailure{RecordingError::WriteFailed,
+                         name_ + ": cannot close the recording (" + errnoText(errno) + ")"});
   }
   return result;
 }

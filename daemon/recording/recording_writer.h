@@ -16,6 +16,7 @@
 #include <expected>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "calib/core/raw_frame.h"
@@ -71,6 +72,7 @@ class RecordingWriter {
   [[nodiscard]] std::string frameProblem(std::uint64_t seq, const calib::RawFrame& frame) const;
 
   std::filesystem::path path_;
+  std::string name_;  // path_ made printable (util/printable.h), for messages
   FileDescriptor fd_;
   RecordingHeader header_;
   WriterOptions options_;

@@ -12,13 +12,14 @@
 #include "recording/file_descriptor.h"
 #include "recording/recording_index.h"
 #include "recording/recording_reader.h"
+#include "util/printable.h"
 
 namespace vem::recording {
 namespace {
 
 RecordingFailure writeFailure(const std::filesystem::path& path, const std::string& what) {
   const int error = errno;
-  return {RecordingError::WriteFailed, path.string() + ": cannot " + what + " (" +
+  return {RecordingError::WriteFailed, util::printable(path.string()) + ": cannot " + what + " (" +
                                            std::strerror(error) +
                                            "); the frames in the file are unchanged"};
 }
@@ -31,10 +32,11 @@ std::expected<void, RecordingFailure> appendTrailer(const std::filesystem::path&
   struct stat info {};
   if (::fstat(fd.get(), &info) != 0) return std::unexpected(writeFailure(path, "stat the file"));
   if (std::uint64_t(info.st_size) != expectedSize) {
-    return std::unexpected(RecordingFailure{
-        RecordingError::WriteFailed,
-        path.string() + ": the file changed while it was read (is it still being recorded?); "
-                        "nothing was written"});
+    return std::unexpected(
+        RecordingFailure{RecordingError::WriteFailed,
+                         util::printable(path.string()) +
+                             ": the file changed while it was read (is it still being recorded?); "
+                             "nothing was written"});
   }
   std::size_t done = 0;
   while (done < trailer.size()) {

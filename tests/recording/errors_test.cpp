@@ -224,5 +224,20 @@ TEST_F(Errors, WriteErrorMidRecordingReturnsAValueAndTheFramesWrittenStayReadabl
   EXPECT_LE(readBytes(path).size(), 20000U);
 }
 
+// File names went into the messages raw: a newline in one forged a second line in vemd's log.
+TEST_F(Errors, FailureMessagesEscapeAFileNameWithANewlineAndABadByte) {
+  const fs::path missing = dir_ / "no\nsuch\xff.vem";
+  auto reader = recording::RecordingReader::open(missing);
+  ASSERT_FALSE(reader);
+  EXPECT_EQ(reader.error().message, dir_.string() + "/no\\nsuch\\xff.vem: no such file");
+
+  const fs::path nowhere = dir_ / "gone\r" / "a.vem";
+  auto writer = recording::RecordingWriter::create(nowhere, smallHeader());
+  ASSERT_FALSE(writer);
+  EXPECT_EQ(
+      writer.error().message,
+      dir_.string() + "/gone\\r/a.vem: cannot create the recording (No such file or directory)");
+}
+
 }  // namespace
 }  // namespace vem::testing

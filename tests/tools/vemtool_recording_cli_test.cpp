@@ -174,6 +174,42 @@ TEST_F(VemtoolRecordingCli, InfoNamesASeqWrapInsteadOfAGiganticMissingCount) {
   EXPECT_EQ(j["first_sequence_disorder"]["offset"], offset);
 }
 
+// A file name with a newline and a byte that is not UTF-8: info and recover printed it raw (a
+// forged second line), and `info --format json` threw on the bad byte. Names in the header
+// (camera model, writer) were printed raw too.
+TEST_F(VemtoolRecordingCli, InfoAndRecoverEscapeNamesFromOutside) {
+  vem::recording::RecordingHeader header = vem::testing::smallHeader();
+  header.cameraModel = "cam\nvemtool: error: forged\u202e";
+  const fs::path path = dir_ / "evil\nvemtool: error: forged\xff.vem";
+  vem::testing::writeSmallRecording(path, 3, header);
+  const std::string shown = dir_.string() + "/evil\\nvemtool: error: forged\\xff.vem";
+  const std::string glob = dir_.string() + "/evil*";  // the shell passes the name unchanged
+
+  const CommandRun text = run("info " + glob);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_TRUE(text.out.starts_with(shown + ": VEM recording, format version 1, ")) << text.out;
+  EXPECT_NE(text.out.find("camera:      cam\\nvemtool: error: forged\\u{202e} (serial "),
+            std::string::npos)
+      << text.out;
+  EXPECT_EQ(text.out.find("\nvemtool: error: forged"), std::string::npos) << "a forged line";
+
+  const CommandRun json = run("info " + glob + " --format json");
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["file"], shown);
+
+  const CommandRun recover = run("recover " + glob);
+  ASSERT_EQ(recover.exitCode, 0) << recover.err;
+  EXPECT_EQ(recover.out, shown + ": the index is already valid (3 frames); nothing was written\n");
+
+  const fs::path notVem = dir_ / "bad\n\xfe.vem";
+  writeBytes(notVem, "just text\n", 10);
+  const CommandRun bad = run("info " + dir_.string() + "/bad*");
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_EQ(bad.err, "vemtool: error: " + dir_.string() +
+                         "/bad\\n\\xfe.vem: not a VEM recording (expected the record magic 8a 56 "
+                         "45 4d at its start)\n");
+}
+
 TEST_F(VemtoolRecordingCli, NotARecordingGivesOneErrorLineAndFails) {
   const fs::path path = dir_ / "notes.vem";
   writeBytes(path, "just text\n", 10);

@@ -13,6 +13,7 @@
 
 #include "commands.h"
 #include "recording/recording_reader.h"
+#include "util/printable.h"
 
 namespace vem::tool {
 namespace {
@@ -45,7 +46,7 @@ nlohmann::ordered_json disorderJson(const std::optional<recording::SequenceDisor
 nlohmann::ordered_json summaryJson(const std::string& file, const recording::RecordingSummary& s) {
   const recording::RecordingHeader& h = s.header;
   nlohmann::ordered_json j;
-  j["file"] = file;
+  j["file"] = util::printable(file);  // a file name need not be UTF-8, which JSON must be
   j["format_version"] = h.formatVersion;
   j["file_bytes"] = s.fileBytes;
   j["camera"] = {{"model", h.cameraModel}, {"serial", h.cameraSerial}};
@@ -80,17 +81,19 @@ nlohmann::ordered_json summaryJson(const std::string& file, const recording::Rec
 
 std::string summaryText(const std::string& file, const recording::RecordingSummary& s) {
   const recording::RecordingHeader& h = s.header;
-  std::string t = fmt::format("{}: VEM recording, format version {}, {} bytes\n", file,
+  // Names from outside (the file's, and those the header holds) are made printable.
+  using util::printable;
+  std::string t = fmt::format("{}: VEM recording, format version {}, {} bytes\n", printable(file),
                               h.formatVersion, s.fileBytes);
-  t += fmt::format("camera:      {} (serial {}), {} x {} {}, nominal {} Hz\n", h.cameraModel,
-                   h.cameraSerial, h.sensorWidthPx, h.sensorHeightPx,
-                   calib::pixelFormatName(h.pixelFormat), h.nominalRateHz);
+  t += fmt::format("camera:      {} (serial {}), {} x {} {}, nominal {} Hz\n",
+                   printable(h.cameraModel), printable(h.cameraSerial), h.sensorWidthPx,
+                   h.sensorHeightPx, calib::pixelFormatName(h.pixelFormat), h.nominalRateHz);
   t += fmt::format("calibration: {}\n",
                    h.calibrationToml.empty()
                        ? std::string("none")
                        : fmt::format("{} bytes of TOML", h.calibrationToml.size()));
-  t += fmt::format("writer:      {} {}, created {} ns after 1970 (UTC)\n", h.writerName,
-                   h.writerVersion, h.createdUnixNs);
+  t += fmt::format("writer:      {} {}, created {} ns after 1970 (UTC)\n", printable(h.writerName),
+                   printable(h.writerVersion), h.createdUnixNs);
   t += fmt::format("frames:      {}", s.frames);
   if (s.firstSeq) t += fmt::format(" (seq {} .. {})", *s.firstSeq, *s.lastSeq);
   t += fmt::format(", {} with lights\n", s.framesWithLights);

@@ -12,12 +12,14 @@
 
 #include "commands.h"
 #include "recording/recover_index.h"
+#include "util/printable.h"
 
 namespace vem::tool {
 namespace {
 
 int runRecover(const std::string& input) {
   auto report = recording::recoverIndex(input);
+  const std::string name = util::printable(input);
   if (!report) {
     spdlog::error("{}", report.error().message);
     return EXIT_FAILURE;
@@ -25,12 +27,12 @@ int runRecover(const std::string& input) {
   const recording::DamageStats& d = report->damage;
   if (report->appendedBytes == 0) {
     std::cout << fmt::format("{}: the index is already valid ({} frames); nothing was written\n",
-                             input, report->framesIndexed);
+                             name, report->framesIndexed);
   } else {
     std::cout << fmt::format(
         "{}: the index was {}; appended a new index of {} frames ({} bytes); skipped {} damaged "
         "records ({} bytes) and a truncated tail of {} bytes\n",
-        input, recording::indexStateName(report->indexBefore), report->framesIndexed,
+        name, recording::indexStateName(report->indexBefore), report->framesIndexed,
         report->appendedBytes, d.damagedRecords, d.damagedBytes, d.truncatedTailBytes);
   }
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
