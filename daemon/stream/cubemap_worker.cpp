@@ -1,8 +1,5 @@
 #include "stream/cubemap_worker.h"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <map>
@@ -12,12 +9,11 @@
 
 #include "core/cube_map.h"
 #include "stream/frame_encoding.h"
+#include "stream/thread_niceness.h"
 
 namespace vem::stream {
 
 namespace {
-
-constexpr int kWorkerNice = 10;
 
 SharedBytes shared(ServerMessage message) {
   return std::make_shared<const std::string>(serialize(std::move(message)));
@@ -69,9 +65,8 @@ bool CubemapWorker::waitIdle(std::int64_t timeoutNs) const {
 }
 
 void CubemapWorker::run() {
-  // Linux: a thread's nice value is per thread (setpriority on its tid). Raising it needs no
-  // privilege; if it fails the worker still only ever takes the newest map.
-  (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), kWorkerNice);
+  // If the system refuses, the worker still only ever takes the newest map.
+  (void)setThisThreadNice(kCubemapWorkerNice);
   Job job;
   for (;;) {
     {

@@ -28,6 +28,7 @@
 #include "stream/handshake_auth.h"
 #include "stream/handshake_slots.h"
 #include "stream/log_budget.h"
+#include "stream/thread_niceness.h"
 #include "stream/tls_server_context.h"
 #include "stream/upgrade_request.h"
 #include "stream/websocket_session.h"
@@ -147,7 +148,10 @@ class StreamServer::Impl final : public SessionHost, public UpgradeHost {
     boundPort_ = acceptor_.local_endpoint().port();
     accept();
     scheduleLogReport();
-    thread_ = std::thread([this] { ioc_.run(); });
+    thread_ = std::thread([this] {
+      (void)setThisThreadNice(kIoThreadNice);
+      ioc_.run();
+    });
     return {};
   }
 

@@ -3,8 +3,9 @@
 // subscriptions and control messages (proto/vem_stream.proto, docs/protocol.md).
 //
 // Threads and ownership:
-// - The server owns one io_context and the one thread that runs it; every connection lives on
-//   that thread. start() binds and starts it; the destructor stops it and joins.
+// - The server owns one io_context and the one thread that runs it (at nice 5:
+//   thread_niceness.h); every connection lives on that thread. start() binds and starts it; the
+//   destructor stops it and joins.
 // - The processing thread publishes through publishLights / publishEnvironment / publishStatus:
 //   each stores the newest message in a mutex-guarded slot and posts at most one fan-out to the
 //   io thread, so publishing never waits for a client and the io thread's queue stays bounded.

@@ -16,6 +16,7 @@
 // VEM_SOAK_SECONDS (default 60) sets the attack's length; every loop is bounded by it and every
 // wait by a timeout. The attackers' threads share the machine with vemd: the figures are what
 // vemd holds while two cores are also busy attacking it.
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -61,7 +62,9 @@ const std::string kToken = "soak-token-0123456789abcdef-0123";
 constexpr double kRateTolerance = 0.05;      // of the camera's rate
 constexpr double kMaxWellBehavedAgeS = 0.5;  // p99 of a reading client's frame age
 constexpr double kLogBytesPerS = 3000.0;     // vemd's log while attacked
-constexpr double kMaxRssGrowthShare = 0.10;  // after warm-up
+// vemd's RSS swings by a cube-map set (tens of MB) as buffers come and go; a leak shows as the
+// second half's peak above the first half's (both after warm-up) by more than this.
+constexpr double kMaxRssGrowthShare = 0.05;
 constexpr long kMaxRssGrowthKb = 16 * 1024;
 
 double soakSeconds() {
@@ -151,8 +154,36 @@ struct AttackCounts {
   std::vector<double> slowAgesS;
 };
 
+// Attack rates: bounded, so that the attackers (on this machine, sharing its two cores with vemd)
+// leave vemd the CPU a remote attacker would. vemd's own cost per connection is what is measured.
+// VEM_SOAK_CHURN_PER_S overrides the churn rate (0: as fast as the threads go).
+double churnPerSecond() {
+  const char* text = std::getenv("VEM_SOAK_CHURN_PER_S");
+  return text != nullptr ? std::max(0.0, std::atof(text)) : 40.0;  // per churning thread (3)
+}
+constexpr double kMalformedPerSecond = 20.0;
+
+// VEM_SOAK_ATTACKER_NICE (default 0): the attackers' threads' nice value. 19 makes them yield to
+// vemd as attackers on another machine would: what remains is vemd's own cost of the attack.
+void niceAttacker() {
+  if (const char* text = std::getenv("VEM_SOAK_ATTACKER_NICE")) {
+    (void)::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), std::atoi(text));
+  }
+}
+
+// Sleeps until the i-th event of a loop running at `perSecond` is due.
+void pace(std::chrono::steady_clock::time_point start, int i, double perSecond) {
+  if (perSecond <= 0.0) return;
+  std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                            std::chrono::duration<double>(double(i) / perSecond)));
+}
+
 void churn(std::uint16_t port, const std::atomic<bool>& running, AttackCounts& counts, int k) {
+  niceAttacker();
+  const auto start = std::chrono::steady_clock::now();
+  const double perSecond = churnPerSecond();
   for (int i = 0; running.load(); ++i) {
+    pace(start, i, perSecond);
     RawWsClient client;
     RawConnectOptions options;
     options.timeout = 5s;
@@ -167,6 +198,7 @@ void churn(std::uint16_t port, const std::atomic<bool>& running, AttackCounts& c
 }
 
 void neverRead(std::uint16_t port, const std::atomic<bool>& running, AttackCounts& counts) {
+  niceAttacker();
   while (running.load()) {
     RawWsClient client;
     RawConnectOptions options;
@@ -186,7 +218,10 @@ void neverRead(std::uint16_t port, const std::atomic<bool>& running, AttackCount
 }
 
 void malformed(std::uint16_t port, const std::atomic<bool>& running, AttackCounts& counts) {
+  niceAttacker();
+  const auto start = std::chrono::steady_clock::now();
   for (int i = 0; running.load(); ++i) {
+    pace(start, i, kMalformedPerSecond);
     RawWsClient client;
     RawConnectOptions options;
     options.timeout = 5s;
@@ -207,6 +242,7 @@ void malformed(std::uint16_t port, const std::atomic<bool>& running, AttackCount
 }
 
 void flood(std::uint16_t port, const std::atomic<bool>& running, AttackCounts& counts) {
+  niceAttacker();
   boost::asio::io_context ioc;
   std::vector<std::unique_ptr<boost::asio::ip::tcp::socket>> sockets;
   while (running.load()) {
@@ -230,6 +266,7 @@ void flood(std::uint16_t port, const std::atomic<bool>& running, AttackCounts& c
 }
 
 void slowReader(std::uint16_t port, const std::atomic<bool>& running, AttackCounts& counts) {
+  niceAttacker();
   RawWsClient reader;
   RawConnectOptions options;
   options.timeout = 10s;
@@ -375,15 +412,14 @@ TEST_F(Soak, VemdHoldsItsRateRecordingAndMemoryWhileEveryAttackRunsAtOnce) {
   }
   std::uint64_t gaps = 0;
   for (std::size_t i = 1; i < seqs.size(); ++i) gaps += seqs[i] != seqs[i - 1] + 1 ? 1 : 0;
-  ProcessSample warm = samples.front();
-  for (const ProcessSample& s : samples) {
-    if (s.atS <= warmUpS) warm = s;
-  }
-  long peakFds = 0, peakRssKb = 0;
+  // Peaks of the two halves after warm-up.
+  const double middleS = (warmUpS + seconds) / 2.0;
+  long firstHalfPeakKb = 0, secondHalfPeakKb = 0, peakFds = 0;
   for (const ProcessSample& s : samples) {
     if (s.atS < warmUpS) continue;
+    long& halfPeakKb = s.atS < middleS ? firstHalfPeakKb : secondHalfPeakKb;
+    halfPeakKb = std::max(halfPeakKb, s.rssKb);
     peakFds = std::max(peakFds, s.fds);
-    peakRssKb = std::max(peakRssKb, s.rssKb);
   }
   const long endRssKb = samples.back().rssKb;
   double wellP50 = 0, wellP99 = 0, wellMax = 0;
@@ -396,15 +432,24 @@ TEST_F(Soak, VemdHoldsItsRateRecordingAndMemoryWhileEveryAttackRunsAtOnce) {
   const double slowP99 = percentile(counts.slowAgesS, 0.99);
   const double slowMax = percentile(counts.slowAgesS, 1.0);
   const double logBytesPerS = double(log.size()) / seconds;
+  std::string rssQuarters;
+  for (int q = 1; q <= 4; ++q) {
+    const double atS = seconds * q / 4.0;
+    const auto it =
+        std::ranges::find_if(samples, [&](const ProcessSample& s) { return s.atS >= atS - 0.5; });
+    if (it != samples.end())
+      rssQuarters += fmt::format("{}{:.0f} s: {} kB", q > 1 ? ", " : "", it->atS, it->rssKb);
+  }
 
   const std::string report = fmt::format(
       "| figure | measured | bound |\n|---|---:|---:|\n"
       "| attack length | {:.0f} s | |\n"
+      "| churn rate asked (3 threads) | {} | |\n"
       "| processed rate (camera {:.0f} Hz) | {:.2f} frames/s | within {:.0f} % |\n"
       "| frames processed / dropped | {:.0f} / {:.0f} | 0 dropped |\n"
       "| recording: frames, gaps in seq | {}, {} | 0 gaps |\n"
-      "| vemd RSS: before, after warm-up ({:.0f} s), peak, end | {} / {} / {} / {} kB | end within "
-      "{:.0f} % or {} MB of warm-up |\n"
+      "| vemd RSS: before; peak of {:.0f}-{:.0f} s; peak of {:.0f}-{:.0f} s; end | {} / {} / {} / "
+      "{} kB | second peak within {:.0f} % or {} MB of the first |\n"
       "| vemd descriptors: before, peak under attack, after | {} / {} / {} | after <= before |\n"
       "| well-behaved client's frame age: median, p99, max | {:.1f} / {:.1f} / {:.1f} ms | p99 < "
       "{:.0f} ms |\n"
@@ -414,14 +459,18 @@ TEST_F(Soak, VemdHoldsItsRateRecordingAndMemoryWhileEveryAttackRunsAtOnce) {
       "| never-reading clients (each closed by vemd) | {} | |\n"
       "| malformed messages sent | {} | |\n"
       "| half-sent requests opened by the flood | {} | |\n"
-      "| cube maps received by the 6 cube-map clients | {} | |\n",
-      seconds, kCameraRateHz, processedRate, kRateTolerance * 100, processed, dropped, seqs.size(),
-      gaps, warmUpS, before.rssKb, warm.rssKb, peakRssKb, endRssKb, kMaxRssGrowthShare * 100,
-      kMaxRssGrowthKb / 1024, before.fds, peakFds, after.fds, wellP50 * 1e3, wellP99 * 1e3,
-      wellMax * 1e3, kMaxWellBehavedAgeS * 1e3, counts.slowFrames.load(), slowP99 * 1e3,
-      slowMax * 1e3, log.size(), logBytesPerS, kLogBytesPerS, counts.churned.load(),
-      counts.stalledConnections.load(), counts.malformedSent.load(), counts.floodOpened.load(),
-      cubemapsReceived);
+      "| cube maps received by the 6 cube-map clients | {} | |\n"
+      "| vemd RSS every quarter of the attack | {} | |\n",
+      seconds,
+      churnPerSecond() > 0 ? fmt::format("{:.0f} connections/s", 3 * churnPerSecond())
+                           : std::string("as fast as they go"),
+      kCameraRateHz, processedRate, kRateTolerance * 100, processed, dropped, seqs.size(), gaps,
+      warmUpS, middleS, middleS, seconds, before.rssKb, firstHalfPeakKb, secondHalfPeakKb, endRssKb,
+      kMaxRssGrowthShare * 100, kMaxRssGrowthKb / 1024, before.fds, peakFds, after.fds,
+      wellP50 * 1e3, wellP99 * 1e3, wellMax * 1e3, kMaxWellBehavedAgeS * 1e3,
+      counts.slowFrames.load(), slowP99 * 1e3, slowMax * 1e3, log.size(), logBytesPerS,
+      kLogBytesPerS, counts.churned.load(), counts.stalledConnections.load(),
+      counts.malformedSent.load(), counts.floodOpened.load(), cubemapsReceived, rssQuarters);
   std::cout << report;
   if (const char* file = std::getenv("VEM_SOAK_REPORT")) std::ofstream(file) << report;
 
@@ -429,8 +478,9 @@ TEST_F(Soak, VemdHoldsItsRateRecordingAndMemoryWhileEveryAttackRunsAtOnce) {
   EXPECT_EQ(dropped, 0.0);
   EXPECT_GT(seqs.size(), std::size_t(seconds * kCameraRateHz * (1.0 - kRateTolerance)));
   EXPECT_EQ(gaps, 0u);
-  EXPECT_LE(endRssKb - warm.rssKb,
-            std::max<long>(long(kMaxRssGrowthShare * double(warm.rssKb)), kMaxRssGrowthKb));
+  EXPECT_LE(secondHalfPeakKb - firstHalfPeakKb,
+            std::max<long>(long(kMaxRssGrowthShare * double(firstHalfPeakKb)), kMaxRssGrowthKb))
+      << "vemd's memory grew under the attack";
   EXPECT_LE(after.fds, before.fds) << "descriptors left open after the attack";
   EXPECT_LT(wellP99, kMaxWellBehavedAgeS);
   EXPECT_LT(logBytesPerS, kLogBytesPerS);
