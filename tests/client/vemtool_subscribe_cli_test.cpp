@@ -93,6 +93,22 @@ TEST_F(VemtoolSubscribeCli, PrintsOneJsonLinePerLightFrameAndTheStatistics) {
   EXPECT_TRUE(stats["latency_p99_ms"].is_number());
 }
 
+TEST_F(VemtoolSubscribeCli, CubemapFaceAndLevelsAreAskedForAsGiven) {
+  TestStreamServer server(0);
+  auto run = start(server.url() +
+                   " --what cubemap --cubemap-face 256 --cubemap-levels 4 --cubemap-rate 5 "
+                   "--frames 1 --timeout 30");
+  ASSERT_TRUE(server.waitForClientMessages(1, 20s));
+  const stream::ClientMessage subscribe = server.clientMessages().at(0);
+  EXPECT_FALSE(subscribe.subscribe().lights());
+  EXPECT_EQ(subscribe.subscribe().cubemap_face_px(), 256u);
+  EXPECT_EQ(subscribe.subscribe().cubemap_levels(), 4u);
+  EXPECT_EQ(subscribe.subscribe().cubemap_rate_hz(), 5.0);
+  server.send(bytesOf(test::environmentMessage(1, 8, 1)));
+  const CommandRun r = run.get();
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
 TEST_F(VemtoolSubscribeCli, ExitsWithTheSentenceWhenTheDaemonSpeaksMajor2) {
   TestStreamServer server(0, "", bytesOf(test::helloMessage(), 2));
   const CommandRun r = start(server.url() + " --frames 1 --timeout 30").get();
@@ -106,7 +122,8 @@ TEST_F(VemtoolSubscribeCli, ExitsWithTheSentenceWhenTheDaemonSpeaksMajor2) {
 TEST_F(VemtoolSubscribeCli, TimesOutWithOneSentenceWhenNoDaemonAnswers) {
   std::uint16_t port = 0;
   { port = TestStreamServer().port(); }  // a port nobody listens on any more
-  const CommandRun r = start("ws://127.0.0.1:" + std::to_string(port) + "/ --frames 1 --timeout 1").get();
+  const CommandRun r =
+      start("ws://127.0.0.1:" + std::to_string(port) + "/ --frames 1 --timeout 1").get();
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("timed out after 1 s with 0 of 1 light frames"), std::string::npos) << r.err;
 }

@@ -1,6 +1,6 @@
 // `vemtool subscribe ws://HOST:PORT`: receives a vemd stream (client/stream_client.h) and prints
-// each light frame as one JSON line (the `vemtool lights` light objects), each cube map as one line,
-// and the reception statistics as a final JSON line on stderr.
+// each light frame as one JSON line (the `vemtool lights` light objects), each cube map as one
+// line, and the reception statistics as a final JSON line on stderr.
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -35,8 +35,10 @@ struct SubscribeOptions {
   std::string tokenFile;
   std::set<std::string> what{"lights"};
   double cubemapRateHz = 1.0;
-  std::uint64_t frames = 0;   // 0: until interrupted or the timeout
-  double timeoutS = 0.0;      // 0: none
+  std::uint32_t cubemapFacePx = 64;
+  std::uint32_t cubemapLevels = 1;
+  std::uint64_t frames = 0;  // 0: until interrupted or the timeout
+  double timeoutS = 0.0;     // 0: none
   std::string caFile;
 };
 
@@ -98,7 +100,8 @@ class FramePrinter {
   void cubemap(const client::EnvironmentFrame& frame) { print(cubemapJson(frame), countCubemaps_); }
 
   // Waits for the wanted frames, the client's refusal, an interrupt or the deadline.
-  bool waitDone(const client::StreamClient& client, std::chrono::steady_clock::time_point deadline) {
+  bool waitDone(const client::StreamClient& client,
+                std::chrono::steady_clock::time_point deadline) {
     std::unique_lock lock(mutex_);
     while (!(wanted_ > 0 && printed_ >= wanted_)) {
       if (interrupted || client.state() == client::ConnectionState::Refused) return false;
@@ -138,8 +141,11 @@ int runSubscribe(SubscribeOptions o) {
   options.caFile = o.caFile;
   options.subscription.lights = lights;
   options.subscription.cubemapRateHz = cubemaps ? o.cubemapRateHz : 0.0;
+  options.subscription.cubemapFacePx = o.cubemapFacePx;
+  options.subscription.cubemapLevels = o.cubemapLevels;
   if (lights) options.onLightFrame = [&printer](const auto& r) { printer.light(r); };
-  if (cubemaps) options.onEnvironmentFrame = [&printer](const auto& r) { printer.cubemap(r.frame); };
+  if (cubemaps)
+    options.onEnvironmentFrame = [&printer](const auto& r) { printer.cubemap(r.frame); };
   auto client = client::StreamClient::start(std::move(options));
   if (!client) {
     spdlog::error("{}", client.error());
@@ -191,6 +197,13 @@ void addSubscribeCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::IsMember({"lights", "cubemap"}));
   cmd->add_option("--cubemap-rate", options->cubemapRateHz, "Cube maps per second (default 1)")
       ->check(CLI::Range(0.01, stream::kMaxCubemapRateHz));
+  cmd->add_option("--cubemap-face", options->cubemapFacePx,
+                  "Cube face size in texels (default 64; without the token at most the daemon's "
+                  "[stream] cubemap_max_face_px)")
+      ->check(CLI::Range(stream::kMinCubeFacePx, stream::kMaxCubeFacePx));
+  cmd->add_option("--cubemap-levels", options->cubemapLevels,
+                  "Cube-map levels: 1 (default) for none below the face size, up to 8")
+      ->check(CLI::Range(1, stream::kMaxCubeLevels));
   cmd->add_option("--frames", options->frames, "Exit after N frames (default: never)");
   cmd->add_option("--timeout", options->timeoutS,
                   "Give up after S seconds (exit 1 when --frames were not all received)")
