@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "client/stream_client.h"
+#include "recording/recording_reader.h"
 #include "stream_e2e/raw_ws_client.h"
 #include "stream_e2e/small_camera.h"
 #include "stream_e2e/vemd_process.h"
@@ -214,8 +215,8 @@ std::expected<std::vector<MessageSize>, std::string> messageSizes(const std::str
 }
 
 std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPath,
-                                                       const std::string& rate,
-                                                       std::size_t clients, double windowS) {
+                                                       const std::string& rate, std::size_t clients,
+                                                       double windowS) {
   auto vemd = startVemd(vemdPath, rate, {});
   if (!vemd) return std::unexpected(vemd.error());
   std::atomic<bool> stop{false};
@@ -281,6 +282,120 @@ std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPa
     const std::uint64_t frames = endStatus->framesProcessed - startStatus->framesProcessed;
     if (frames > 0) result.cpuMsPerFrame = cpuMs / double(frames);
   }
+  return result;
+}
+
+std::expected<CubemapLoadResult, std::string> rateWithCubemapLoad(const std::string& vemdPath,
+                                                                  double rateHz,
+                                                                  const CubemapLoad& load,
+                                                                  double windowS) {
+  const std::string token = "bench-token-0123456789abcdef-0123";
+  const auto dir =
+      std::filesystem::temp_directory_path() / fmt::format("vem_stream_bench_load_{}", ::getpid());
+  std::filesystem::create_directories(dir);
+  const auto config = dir / "vemd.toml";
+  std::ofstream(config) << "version = 1\n[stream]\ntoken = \"" << token << "\"\n";
+  std::filesystem::permissions(
+      config, std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+  const auto recording = dir / "during-load.vem";
+  CubemapLoadResult result;
+  result.load = load;
+  {
+    auto vemd = startVemd(vemdPath, fmt::format("{}", rateHz),
+                          {"--config", config.string(), "--record", recording.string()});
+    if (!vemd) return std::unexpected(vemd.error());
+    std::atomic<bool> stop{false};
+    std::atomic<std::size_t> subscribed{0};
+    std::atomic<std::uint64_t> cubemaps{0};
+    std::atomic<std::uint64_t> refused{0};
+    std::atomic<bool> counting{false};
+    std::vector<std::thread> drains;
+    for (std::size_t i = 0; i < load.clients; ++i) {
+      drains.emplace_back([&, port = (*vemd)->port] {
+        RawWsClient raw;
+        e2e::RawConnectOptions options;
+        if (load.token) options.token = token;
+        if (raw.connect(port, options) != 0) return;
+        stream::ClientMessage subscribe;
+        subscribe.set_request_id(1);
+        subscribe.mutable_subscribe()->set_lights(true);
+        subscribe.mutable_subscribe()->set_cubemap_face_px(std::uint32_t(load.facePx));
+        subscribe.mutable_subscribe()->set_cubemap_levels(std::uint32_t(load.levels));
+        subscribe.mutable_subscribe()->set_cubemap_rate_hz(load.rateHz);
+        subscribe.mutable_subscribe()->set_preview(i % 2 == 0);
+        if (!raw.send(subscribe, 5s)) return;
+        ++subscribed;
+        while (!stop.load()) {
+          auto bytes = raw.readBytes(5s);
+          if (!bytes) break;
+          stream::ServerMessage message;
+          if (!message.ParseFromString(*bytes)) continue;
+          if (message.has_reply() && !message.reply().ok()) ++refused;
+          if (message.has_environment() && counting.load()) ++cubemaps;
+        }
+      });
+    }
+    auto streamClient = startClient((*vemd)->port, {});
+    const auto joinDrains = [&] {
+      stop = true;
+      for (std::thread& drain : drains) drain.join();
+    };
+    if (!streamClient) {
+      joinDrains();
+      return std::unexpected(streamClient.error());
+    }
+    const auto deadline = std::chrono::steady_clock::now() + kStartTimeout;
+    while (subscribed.load() < load.clients && std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(50ms);
+    }
+    std::this_thread::sleep_for(2s);
+    const auto startStatus = (*streamClient)->status();
+    const double startCpuMs = cpuTimeMs((*vemd)->process->pid());
+    counting = true;
+    const auto windowStart = std::chrono::steady_clock::now();
+    std::this_thread::sleep_for(std::chrono::duration<double>(windowS));
+    counting = false;
+    const double elapsedS =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - windowStart).count();
+    const auto endStatus = (*streamClient)->status();
+    const double cpuMs = cpuTimeMs((*vemd)->process->pid()) - startCpuMs;
+    (*streamClient)->stop();
+    joinDrains();
+    if (subscribed.load() < load.clients) {
+      return std::unexpected(
+          fmt::format("only {} of {} clients subscribed", subscribed.load(), load.clients));
+    }
+    if (startStatus && endStatus) {
+      const std::uint64_t frames = endStatus->framesProcessed - startStatus->framesProcessed;
+      result.processedHz = double(frames) / elapsedS;
+      result.dropped = endStatus->framesDropped - startStatus->framesDropped;
+      if (frames > 0) result.cpuMsPerFrame = cpuMs / double(frames);
+    }
+    result.cubemapsPerS = double(cubemaps.load()) / elapsedS;
+    result.refused = refused.load();
+    // The whole run's drops, from vemd's final statistics line ("..., N dropped, ...").
+    (*vemd)->process->signal(SIGTERM);
+    (void)(*vemd)->process->waitForExit(30s);
+    const std::string log = (*vemd)->process->stderrText();
+    const std::size_t final = log.rfind("final ");
+    const std::size_t at = final == std::string::npos ? final : log.find(" dropped", final);
+    if (at != std::string::npos) {
+      const std::size_t begin = log.rfind(' ', at - 1) + 1;
+      result.droppedInRun = std::stoull(log.substr(begin, at - begin));
+    }
+  }  // vemd has stopped: its recording has its index
+  auto reader = recording::RecordingReader::open(recording);
+  if (!reader) return std::unexpected("cannot read the recording made under load");
+  std::optional<std::uint64_t> last;
+  for (;;) {
+    auto frame = reader->next();
+    if (!frame || !*frame) break;
+    ++result.recorded;
+    if (last && (*frame)->seq != *last + 1) ++result.recordingGaps;
+    last = (*frame)->seq;
+  }
+  std::error_code ignored;
+  std::filesystem::remove_all(dir, ignored);
   return result;
 }
 

@@ -5,8 +5,8 @@
 // - messageSizes: bytes of each serialized ServerMessage a raw client receives: light frames per
 //   light count, environment frames (cube maps) per face size and mip levels;
 // - rateWithClients: vemd's processed frame rate at --rate max or a paced rate (its Status) with
-//   N clients connected: one StreamClient that reads the Status plus N - 1 raw clients that read and
-//   discard every message, each on its own thread; and vemd's CPU time per processed frame
+//   N clients connected: one StreamClient that reads the Status plus N - 1 raw clients that read
+//   and discard every message, each on its own thread; and vemd's CPU time per processed frame
 //   (/proc/PID/stat), which shows what each client costs when the two cores are shared.
 // Each returns one sentence when vemd or a client does not come up.
 #pragma once
@@ -55,6 +55,32 @@ struct RateResult {
                                                                      const std::string& rate,
                                                                      std::size_t clients,
                                                                      double windowS);
+
+// Issue 16, item 1: clients asking for cube maps, with or without the token, while vemd records.
+struct CubemapLoad {
+  std::size_t clients = 10;
+  int facePx = 512;
+  int levels = 8;
+  double rateHz = 60.0;
+  bool token = true;  // with the token (no budget), or read-only (within [stream]'s budget)
+};
+
+struct CubemapLoadResult {
+  CubemapLoad load;
+  double processedHz = 0.0;         // vemd's frames processed per second of the window
+  std::uint64_t dropped = 0;        // frames vemd's capture queue dropped in the window
+  std::uint64_t droppedInRun = 0;   // ... over the whole run (its final statistics)
+  std::uint64_t recorded = 0;       // frames in the recording made meanwhile (whole run)
+  std::uint64_t recordingGaps = 0;  // seq steps other than +1 in it
+  double cubemapsPerS = 0.0;        // environment frames all the clients received per second
+  std::uint64_t refused = 0;        // subscriptions the daemon refused
+  double cpuMsPerFrame = 0.0;       // vemd's CPU time (all threads) per processed frame
+};
+
+// vemd at `rateHz` with --record, the load's clients subscribed and draining every message, for
+// `windowS` after they are all connected.
+[[nodiscard]] std::expected<CubemapLoadResult, std::string> rateWithCubemapLoad(
+    const std::string& vemdPath, double rateHz, const CubemapLoad& load, double windowS);
 
 // The q-quantile (0..1) of `values`, linearly interpolated; 0 when empty.
 [[nodiscard]] double quantile(std::vector<double> values, double q);
