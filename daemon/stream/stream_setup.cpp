@@ -11,6 +11,7 @@
 
 #include "stream/recording_switch.h"
 #include "stream/stream_sink.h"
+#include "util/printable.h"
 #include "vemd/daemon_setup.h"
 
 namespace vem::stream {
@@ -18,29 +19,44 @@ namespace vem::stream {
 namespace fs = std::filesystem;
 
 std::expected<std::string, std::string> readTokenFile(const fs::path& path) {
+  const std::string name = util::printable(path.string());
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) {
-    return std::unexpected(fmt::format("stream.token_file: {}: cannot read it", path.string()));
+    return std::unexpected(fmt::format("stream.token_file: {}: cannot read it", name));
   }
   if ((info.st_mode & (S_IRWXG | S_IRWXO)) != 0) {
     return std::unexpected(fmt::format(
         "stream.token_file: {} can be read by group or others (mode {:o}); allow its owner only "
         "(chmod 600)",
-        path.string(), info.st_mode & 07777));
+        name, info.st_mode & 07777));
   }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
   if (!in && !in.eof()) {
-    return std::unexpected(fmt::format("stream.token_file: {}: cannot read it", path.string()));
+    return std::unexpected(fmt::format("stream.token_file: {}: cannot read it", name));
   }
   std::string token = text.str();
   const auto first = token.find_first_not_of(" \t\r\n");
   if (first == std::string::npos) {
-    return std::unexpected(fmt::format("stream.token_file: {} is empty", path.string()));
+    return std::unexpected(fmt::format("stream.token_file: {} is empty", name));
   }
   token = token.substr(first, token.find_last_not_of(" \t\r\n") - first + 1);
+  if (auto problem = vemd::streamTokenProblem(token)) {
+    return std::unexpected(fmt::format("stream.token_file: {}: expected {}, found {}", name,
+                                       vemd::streamTokenExpected(), *problem));
+  }
   return token;
+}
+
+std::expected<std::string, std::string> streamToken(const vemd::StreamConfig& config) {
+  if (!config.tokenFile.empty()) return readTokenFile(config.tokenFile);
+  if (config.token.empty()) return config.token;
+  if (auto problem = vemd::streamTokenProblem(config.token)) {
+    return std::unexpected(
+        fmt::format("stream.token: expected {}, found {}", vemd::streamTokenExpected(), *problem));
+  }
+  return config.token;
 }
 
 std::string calibrationId(const vemd::SourceDescription& source) {
@@ -61,12 +77,9 @@ std::expected<StreamServerOptions, std::string> serverOptions(
   StreamServerOptions options;
   options.address = address->host;
   options.port = address->port;
-  options.token = config.token;
-  if (!config.tokenFile.empty()) {
-    auto token = readTokenFile(config.tokenFile);
-    if (!token) return std::unexpected(token.error());
-    options.token = std::move(*token);
-  }
+  auto token = streamToken(config);
+  if (!token) return std::unexpected(token.error());
+  options.token = std::move(*token);
   options.tokenRequiredToConnect = !address->loopback;
   if (options.tokenRequiredToConnect && options.token.empty()) {
     return std::unexpected(fmt::format(
@@ -103,9 +116,9 @@ fs::path controlRecordingFolder(const vemd::VemdConfig& config) {
   return dir;
 }
 
-std::expected<Streaming, std::string> startStreaming(const vemd::VemdConfig& config,
-                                                     const vemd::SourceDescription& source,
-                                                     std::vector<std::unique_ptr<vemd::Sink>>& sinks) {
+std::expected<Streaming, std::string> startStreaming(
+    const vemd::VemdConfig& config, const vemd::SourceDescription& source,
+    std::vector<std::unique_ptr<vemd::Sink>>& sinks) {
   Streaming streaming;
   if (!config.stream.enabled || config.stream.listen.empty()) return streaming;
   auto options = serverOptions(config.stream, source);
@@ -113,7 +126,8 @@ std::expected<Streaming, std::string> startStreaming(const vemd::VemdConfig& con
   const bool tlsAsked = !options->tlsCertFile.empty();
   auto server = StreamServer::start(std::move(*options));
   if (!server) {
-    if (tlsAsked && server.error().starts_with("stream.tls")) return std::unexpected(server.error());
+    if (tlsAsked && server.error().starts_with("stream.tls"))
+      return std::unexpected(server.error());
     spdlog::error("{}; vemd runs without streaming", server.error());
     return streaming;
   }
@@ -123,8 +137,8 @@ std::expected<Streaming, std::string> startStreaming(const vemd::VemdConfig& con
       *streaming.server, StreamSinkOptions{int(config.stream.cubemapZstdLevel), 256});
   recording::WriterOptions writerOptions;
   writerOptions.syncEveryFrames = std::uint32_t(config.output.recordSyncEvery);
-  auto recorder = std::make_unique<RecordingSwitch>(
-      controlRecordingFolder(config), vemd::recordingContext(source), writerOptions);
+  auto recorder = std::make_unique<RecordingSwitch>(controlRecordingFolder(config),
+                                                    vemd::recordingContext(source), writerOptions);
   streaming.control = std::make_unique<StreamControl>(
       *streaming.server, *sink, recorder.get(), StreamIdentity{source.spec, calibrationId(source)});
   sinks.push_back(std::move(recorder));

@@ -2,8 +2,10 @@
 // the StreamSink and RecordingSwitch that join vemd's sinks, and the StreamControl the loop calls
 // between frames.
 //
-// Refused at start, in one sentence: a token file that cannot be read, is empty, or is readable by
-// group or others; TLS files that do not load. A port that cannot be bound is not fatal: vemd logs
+// Refused at start, in one sentence: a token file that cannot be read, is empty, is readable by
+// group or others, or holds a token vemd does not accept (vemd::streamTokenProblem: too short,
+// white space or control bytes inside; the token itself is never quoted); TLS files that do not
+// load. A port that cannot be bound is not fatal: vemd logs
 // it and runs without streaming (degrade, don't die). Disabled ([stream] enabled = false or
 // listen = ""): nothing is started.
 #pragma once
@@ -25,6 +27,10 @@ namespace vem::stream {
 // The token in `path` (surrounding white space removed), or why it cannot be used.
 [[nodiscard]] std::expected<std::string, std::string> readTokenFile(
     const std::filesystem::path& path);
+
+// The token clients present: stream.token, or the one in stream.token_file (read now); "" for
+// none. vemd asks for it before its long start-up steps, so a bad token file stops it at once.
+[[nodiscard]] std::expected<std::string, std::string> streamToken(const vemd::StreamConfig& config);
 
 // "MODEL SERIAL #hash" of the source's camera file (FNV-1a 64 of its text), "none" without one.
 [[nodiscard]] std::string calibrationId(const vemd::SourceDescription& source);

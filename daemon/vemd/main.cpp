@@ -13,8 +13,8 @@
 
 #include "stream/stream_setup.h"
 #include "vemd/daemon_loop.h"
-#include "vemd/device_list.h"
 #include "vemd/daemon_setup.h"
+#include "vemd/device_list.h"
 #include "vemd/service_observer.h"
 #include "vemd/vemd_config.h"
 
@@ -53,10 +53,18 @@ int main(int argc, char** argv) {
     return 0;
   }
   installStopHandlers();
+  if (config->stream.enabled && !config->stream.listen.empty()) {
+    // A token file that cannot be used stops vemd now, not after the long start-up steps.
+    if (auto token = vem::stream::streamToken(config->stream); !token) {
+      spdlog::error("{}", token.error());
+      return 1;
+    }
+  }
   vem::stream::Streaming streaming;  // outlives the daemon's sinks, which borrow the server
   auto daemon = buildDaemon(
-      *config, [&](const SourceDescription& source, std::vector<std::unique_ptr<Sink>>& sinks)
-                   -> std::expected<void, std::string> {
+      *config,
+      [&](const SourceDescription& source,
+          std::vector<std::unique_ptr<Sink>>& sinks) -> std::expected<void, std::string> {
         auto started = vem::stream::startStreaming(*config, source, sinks);
         if (!started) return std::unexpected(started.error());
         streaming = std::move(*started);
@@ -71,8 +79,8 @@ int main(int argc, char** argv) {
                config->processing.mapHeight, config->processing.lightCount,
                vem::presetName(config->processing.filter), daemon->sinks.size());
   ServiceObserver observer(ServiceNotifier::fromEnvironment());
-  const LoopResult result = runDaemonLoop(*daemon->source, *daemon->pipeline, daemon->sinks,
-                                          daemon->loop, gStopRequested, &observer,
-                                          streaming.control.get());
+  const LoopResult result =
+      runDaemonLoop(*daemon->source, *daemon->pipeline, daemon->sinks, daemon->loop, gStopRequested,
+                    &observer, streaming.control.get());
   return result.sinkFailures > 0 ? 1 : 0;
 }

@@ -41,15 +41,15 @@ constexpr const char* kRateExpected =
     "\"recorded\", \"max\" or a number of frames per second above 0 and at most 10000";
 
 // The keys of each section, in the order config/vemd.toml documents them.
-constexpr std::string_view kTopKeys[] = {"version", "source",     "camera", "bracketing",
-                                         "processing", "filter", "clustering", "output", "stats",
-                                         "stream"};
+constexpr std::string_view kTopKeys[] = {"version",    "source", "camera",     "bracketing",
+                                         "processing", "filter", "clustering", "output",
+                                         "stats",      "stream"};
 constexpr std::string_view kSourceKeys[] = {
     "spec",         "rate",   "loop",       "frames", "queue_depth", "retry_initial_ms",
     "retry_max_ms", "camera", "noise_code", "seed"};
-constexpr std::string_view kCameraKeys[] = {"pixel_format",  "width_px", "height_px",
-                                            "exposure_us",   "gain",     "frame_rate_hz",
-                                            "buffers",       "timeout_ms"};
+constexpr std::string_view kCameraKeys[] = {"pixel_format", "width_px",  "height_px",
+                                            "exposure_us",  "gain",      "frame_rate_hz",
+                                            "buffers",      "timeout_ms"};
 constexpr std::string_view kBracketingKeys[] = {"count", "stops", "base_exposure_us",
                                                 "match_tolerance"};
 constexpr std::string_view kProcessingKeys[] = {"map_width", "map_height", "lights", "sampler"};
@@ -59,16 +59,23 @@ constexpr std::string_view kOutputKeys[] = {
     "dir",          "jsonl", "record", "record_sync_every", "preview_every", "preview_numbered",
     "preview_scale"};
 constexpr std::string_view kStatsKeys[] = {"every_s"};
-constexpr std::string_view kStreamKeys[] = {
-    "enabled",          "listen",
-    "token",            "token_file",
-    "tls_cert",         "tls_key",
-    "max_clients",      "send_timeout_ms",
-    "cubemap_zstd_level", "record_dir",
-    "handshake_timeout_ms", "max_handshakes",
-    "max_handshakes_per_address", "max_client_lag_ms",
-    "send_buffer_bytes", "cubemap_max_face_px",
-    "cubemap_max_rate_hz"};
+constexpr std::string_view kStreamKeys[] = {"enabled",
+                                            "listen",
+                                            "token",
+                                            "token_file",
+                                            "tls_cert",
+                                            "tls_key",
+                                            "max_clients",
+                                            "send_timeout_ms",
+                                            "cubemap_zstd_level",
+                                            "record_dir",
+                                            "handshake_timeout_ms",
+                                            "max_handshakes",
+                                            "max_handshakes_per_address",
+                                            "max_client_lag_ms",
+                                            "send_buffer_bytes",
+                                            "cubemap_max_face_px",
+                                            "cubemap_max_rate_hz"};
 constexpr const char* kListenExpected =
     "\"IPV4:PORT\" or \"[IPV6]:PORT\" (an IP address, port 0 to 65535), or \"\" (no server)";
 
@@ -103,7 +110,8 @@ void readCamera(TomlSectionReader r, CameraConfig& c) {
   r.onlyKeys(kCameraKeys);
   r.text("pixel_format", c.pixelFormat);
   if (!c.pixelFormat.empty() && !calib::parsePixelFormat(c.pixelFormat)) {
-    r.fail("pixel_format", "\"\", \"Mono8\", \"Mono10\", \"Mono12\", \"Mono16\", \"RGB8\" ... \"RGB16\"",
+    r.fail("pixel_format",
+           "\"\", \"Mono8\", \"Mono10\", \"Mono12\", \"Mono16\", \"RGB8\" ... \"RGB16\"",
            "the string \"" + c.pixelFormat + "\"");
   }
   r.wholeNumber("width_px", 0, kMaxSensorSide, c.widthPx);
@@ -174,6 +182,11 @@ void readStream(TomlSectionReader r, StreamConfig& s) {
     r.fail("listen", kListenExpected, "the string \"" + s.listen + "\"");
   }
   r.text("token", s.token);
+  if (!s.token.empty()) {
+    if (auto problem = streamTokenProblem(s.token)) {
+      r.fail("token", streamTokenExpected(), *problem);
+    }
+  }
   r.text("token_file", s.tokenFile);
   r.text("tls_cert", s.tlsCert);
   r.text("tls_key", s.tlsKey);
@@ -362,14 +375,36 @@ constexpr const char* kFooter =
 
 }  // namespace
 
+std::string streamTokenExpected() {
+  return fmt::format(
+      "a token of {} to {} visible ASCII characters without white space (`openssl rand -hex 32` "
+      "makes one)",
+      kMinStreamTokenBytes, kMaxStreamTokenBytes);
+}
+
+std::optional<std::string> streamTokenProblem(std::string_view token) {
+  for (std::size_t i = 0; i < token.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(token[i]);
+    if (byte == ' ' || (byte >= '\t' && byte <= '\r')) {
+      return fmt::format("white space at byte {} of {}", i + 1, token.size());
+    }
+    if (byte < 0x21 || byte > 0x7e) {
+      return fmt::format("a control or non-ASCII byte at byte {} of {}", i + 1, token.size());
+    }
+  }
+  if (token.size() < kMinStreamTokenBytes || token.size() > kMaxStreamTokenBytes) {
+    return fmt::format("a token of {} byte{}", token.size(), token.size() == 1 ? "" : "s");
+  }
+  return std::nullopt;
+}
+
 std::optional<ListenAddress> parseListenAddress(const std::string& text) {
   const std::size_t colon = text.rfind(':');
   if (colon == std::string::npos || colon == 0) return std::nullopt;
   std::string host = text.substr(0, colon);
   const std::string portText = text.substr(colon + 1);
   std::uint32_t port = 0;
-  const auto [end, ec] =
-      std::from_chars(portText.data(), portText.data() + portText.size(), port);
+  const auto [end, ec] = std::from_chars(portText.data(), portText.data() + portText.size(), port);
   if (portText.empty() || ec != std::errc() || end != portText.data() + portText.size() ||
       port > 65535) {
     return std::nullopt;

@@ -8,7 +8,8 @@
 //   "vemd.toml: processing.lights: expected a whole number from 1 to 65536, found 0".
 // Flags: --config FILE, --source SPEC, --frames N, --rate recorded|max|HZ, --loop, --lights N,
 // --cluster Q (0: off), --out DIR, --record FILE, --jsonl FILE, --preview-every N (0: off),
-// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR; a bad flag value is refused the same way ("--lights: expected ...").
+// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR; a bad flag value is refused
+// the same way ("--lights: expected ...").
 //
 // Units are in the key names: ..._ms milliseconds, ..._s seconds, rate in frames per second.
 #pragma once
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "vemd/pipeline.h"
@@ -67,10 +69,10 @@ struct CameraConfig {
 
 // [bracketing]: exposure bracketing for cameras without an HDR sensor (docs/cameras.md).
 struct BracketingConfig {
-  std::int64_t count = 0;         // exposures per group; 0: off, else 2 to 9
-  double stops = 2.0;             // between neighbouring exposures
-  double baseExposureUs = 1000.0; // the shortest exposure
-  double matchTolerance = 0.05;   // a frame's reported exposure vs the bracket's, relative
+  std::int64_t count = 0;          // exposures per group; 0: off, else 2 to 9
+  double stops = 2.0;              // between neighbouring exposures
+  double baseExposureUs = 1000.0;  // the shortest exposure
+  double matchTolerance = 0.05;    // a frame's reported exposure vs the bracket's, relative
   friend bool operator==(const BracketingConfig&, const BracketingConfig&) = default;
 };
 
@@ -80,11 +82,12 @@ struct StatsConfig {
 };
 
 // [stream]: the WebSocket server for render clients (daemon/stream/stream_server.h,
-// docs/protocol.md). Listening beyond loopback needs a token (checked when the file is read).
+// docs/protocol.md). Listening beyond loopback needs a token (checked when the file is read), and a
+// token given here must pass streamTokenProblem (below).
 struct StreamConfig {
   bool enabled = true;
   std::string listen = "127.0.0.1:8765";  // "IPV4:PORT" or "[IPV6]:PORT"; port 0: any; "": off
-  std::string token;      // the bearer token; "": none (or token_file)
+  std::string token;                      // the bearer token; "": none (or token_file)
   std::string tokenFile;  // a file holding the token; must not be readable by group or others
   std::string tlsCert;    // PEM certificate chain: wss:// (with tls_key)
   std::string tlsKey;     // PEM private key
@@ -102,6 +105,21 @@ struct StreamConfig {
                           // (when it is one), else output.dir
   friend bool operator==(const StreamConfig&, const StreamConfig&) = default;
 };
+
+// What vemd accepts as a stream token (stream.token, or the contents of stream.token_file), on
+// every listener: on loopback too, where the token grants control (light count, filter,
+// recordings) and any local user can connect. 16 visible ASCII characters are at least 64 bits
+// even as hex, beyond guessing through WebSocket handshakes, and refuse typed words ("secret");
+// `openssl rand -hex 32` makes a 64-character (256-bit) one. White space and control or non-ASCII
+// bytes are refused: HTTP trims or mangles them, so no client could present such a token. At most
+// 1024 bytes, so "Authorization: Bearer TOKEN" fits an HTTP request head.
+inline constexpr std::size_t kMinStreamTokenBytes = 16;
+inline constexpr std::size_t kMaxStreamTokenBytes = 1024;
+// "a token of 16 to 1024 visible ASCII characters ...", for messages.
+[[nodiscard]] std::string streamTokenExpected();
+// What is wrong with `token` ("a token of 3 bytes", "white space at byte 5"), never quoting it (it
+// is a secret); nullopt when vemd accepts it.
+[[nodiscard]] std::optional<std::string> streamTokenProblem(std::string_view token);
 
 // A parsed [stream] listen value.
 struct ListenAddress {

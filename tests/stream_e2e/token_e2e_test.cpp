@@ -12,7 +12,7 @@
 namespace vem::e2e {
 namespace {
 
-constexpr const char* kToken = "e2e-secret-7f3a";
+constexpr const char* kToken = "e2e-secret-7f3a-c4d1";  // vemd wants 16 bytes or more
 
 stream::Control setLightCount(std::uint32_t count) {
   stream::Control control;

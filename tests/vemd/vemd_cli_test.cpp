@@ -216,6 +216,41 @@ TEST_F(VemdCli, TellsTheServiceManagerReadyWatchdogStatusAndStopping) {
   EXPECT_LT(position("READY=1"), position("STOPPING=1"));
 }
 
+// Catches vemd accepting a token no one should use (issue 16: a one-character token was
+// accepted): a token file holding 5 bytes stops it before its start-up, exit 1, one sentence that
+// names the key and the file, not the token.
+TEST_F(VemdCli, TokenFileWithAShortTokenRefusesToStartInOneSentence) {
+  const fs::path token = dir_ / "token";
+  std::ofstream(token) << "s3crt\n";
+  fs::permissions(token, fs::perms::owner_read | fs::perms::owner_write);
+  const fs::path config = dir_ / "vemd.toml";
+  std::ofstream(config) << "[stream]\ntoken_file = \"" << token.string() << "\"\n";
+  const CommandRun r =
+      run("--config " + config.string() + " --source synthetic:sky --frames 1", false);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("error: stream.token_file: " + token.string() +
+                       ": expected a token of 16 to 1024 visible ASCII characters without white "
+                       "space (`openssl rand -hex 32` makes one), found a token of 5 bytes\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("s3crt"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("starting:"), std::string::npos) << r.err;
+}
+
+// Catches a white-space token being accepted (issue 16: on 0.0.0.0 vemd started and every client
+// got 401, since HTTP trims it): refused in the configuration, exit 2, on any listener.
+TEST_F(VemdCli, WhiteSpaceOnlyTokenRefusesToStart) {
+  const fs::path config = dir_ / "vemd.toml";
+  std::ofstream(config) << "[stream]\nlisten = \"127.0.0.1:0\"\ntoken = \"   \"\n";
+  const CommandRun r =
+      run("--config " + config.string() + " --source synthetic:sky --frames 1", false);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_EQ(r.err, config.string() +
+                       ": stream.token: expected a token of 16 to 1024 visible ASCII characters "
+                       "without white space (`openssl rand -hex 32` makes one), found white space "
+                       "at byte 1 of 3\n");
+}
+
 TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {
   const CommandRun r = run("--frames 1");
   EXPECT_EQ(r.exitCode, 1);
