@@ -43,6 +43,27 @@ void remapPixels(const PolarRemap& remap, int sensorChannels, Load load, float* 
   }
 }
 
+// Row y of the table: each map pixel's direction through the lens onto the sensor.
+void mapRow(const KannalaBrandtLens& lens, const glm::dmat3& cameraFromWorld, int y,
+            PolarRemap& remap) {
+  const double theta = thetaFromRowCoord(remap.layout, remap.mapHeight, y + 0.5);
+  for (int x = 0; x < remap.mapWidth; ++x) {
+    const double phi = phiFromColumnCoord(remap.layout, remap.mapWidth, x + 0.5);
+    const auto sensor = lens.sensorFromCamera(cameraFromWorld * directionFromAngles(theta, phi));
+    if (!sensor) continue;
+    const double u0 = std::floor(sensor->x);
+    const double v0 = std::floor(sensor->y);
+    if (!(u0 >= 0.0 && v0 >= 0.0 && u0 + 1.0 < remap.sensorWidth &&
+          v0 + 1.0 < remap.sensorHeight)) {
+      continue;
+    }
+    const std::size_t i = std::size_t(y) * std::size_t(remap.mapWidth) + std::size_t(x);
+    remap.topLeftTap[i] = std::uint32_t(v0) * std::uint32_t(remap.sensorWidth) + std::uint32_t(u0);
+    remap.fractionU[i] = float(sensor->x - u0);
+    remap.fractionV[i] = float(sensor->y - v0);
+  }
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> PolarRemap::validMask() const {
@@ -54,13 +75,23 @@ std::vector<std::uint8_t> PolarRemap::validMask() const {
 
 double PolarRemap::validFraction() const {
   if (topLeftTap.empty()) return 0.0;
-  const auto valid = std::ranges::count_if(topLeftTap, [](std::uint32_t t) { return t != kInvalid; });
+  const auto valid =
+      std::ranges::count_if(topLeftTap, [](std::uint32_t t) { return t != kInvalid; });
   return double(valid) / double(topLeftTap.size());
 }
 
 PolarRemap buildPolarRemap(const KannalaBrandtLens& lens, const CameraOrientation& orientation,
                            int sensorWidth, int sensorHeight, MapLayout layout, int mapWidth,
                            int mapHeight) {
+  return *buildPolarRemap(lens, orientation, sensorWidth, sensorHeight, layout, mapWidth, mapHeight,
+                          [] { return false; });
+}
+
+std::optional<PolarRemap> buildPolarRemap(const KannalaBrandtLens& lens,
+                                          const CameraOrientation& orientation, int sensorWidth,
+                                          int sensorHeight, MapLayout layout, int mapWidth,
+                                          int mapHeight,
+                                          const std::function<bool()>& stopRequested) {
   PolarRemap remap;
   remap.layout = layout;
   remap.mapWidth = mapWidth;
@@ -73,19 +104,8 @@ PolarRemap buildPolarRemap(const KannalaBrandtLens& lens, const CameraOrientatio
   remap.fractionV.assign(count, 0.0f);
   const glm::dmat3 cameraFromWorld = glm::transpose(worldFromCamera(orientation));
   for (int y = 0; y < mapHeight; ++y) {
-    const double theta = thetaFromRowCoord(layout, mapHeight, y + 0.5);
-    for (int x = 0; x < mapWidth; ++x) {
-      const double phi = phiFromColumnCoord(layout, mapWidth, x + 0.5);
-      const auto sensor = lens.sensorFromCamera(cameraFromWorld * directionFromAngles(theta, phi));
-      if (!sensor) continue;
-      const double u0 = std::floor(sensor->x);
-      const double v0 = std::floor(sensor->y);
-      if (!(u0 >= 0.0 && v0 >= 0.0 && u0 + 1.0 < sensorWidth && v0 + 1.0 < sensorHeight)) continue;
-      const std::size_t i = std::size_t(y) * std::size_t(mapWidth) + std::size_t(x);
-      remap.topLeftTap[i] = std::uint32_t(v0) * std::uint32_t(sensorWidth) + std::uint32_t(u0);
-      remap.fractionU[i] = float(sensor->x - u0);
-      remap.fractionV[i] = float(sensor->y - v0);
-    }
+    if (stopRequested && stopRequested()) return std::nullopt;
+    mapRow(lens, cameraFromWorld, y, remap);
   }
   return remap;
 }
@@ -99,7 +119,8 @@ void applyPolarRemap(const PolarRemap& remap, const RawFrame& frame, const CodeT
   const float* table = lut.luminanceCdM2.data();
   const std::size_t size = lut.size;
   if (frame.format.channels == 1) {
-    remapPixels<1>(remap, 1, [&](int, std::size_t s) { return table[codes[s]]; }, map.rgb.data());
+    remapPixels<1>(
+        remap, 1, [&](int, std::size_t s) { return table[codes[s]]; }, map.rgb.data());
   } else {
     remapPixels<3>(
         remap, 3, [&](int c, std::size_t s) { return table[std::size_t(c) * size + codes[s]]; },
@@ -114,9 +135,11 @@ void applyPolarRemap(const PolarRemap& remap, std::span<const float> luminanceCd
   prepareMap(remap, map);
   const float* values = luminanceCdM2.data();
   if (channels == 1) {
-    remapPixels<1>(remap, 1, [&](int, std::size_t s) { return values[s]; }, map.rgb.data());
+    remapPixels<1>(
+        remap, 1, [&](int, std::size_t s) { return values[s]; }, map.rgb.data());
   } else {
-    remapPixels<3>(remap, 3, [&](int, std::size_t s) { return values[s]; }, map.rgb.data());
+    remapPixels<3>(
+        remap, 3, [&](int, std::size_t s) { return values[s]; }, map.rgb.data());
   }
 }
 

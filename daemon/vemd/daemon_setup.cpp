@@ -6,8 +6,10 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include "calib/core/raw_frame.h"
+#include "util/printable.h"
 #include "vemd/source_factory.h"
 
 namespace vem::vemd {
@@ -42,6 +44,14 @@ std::optional<std::string> outputFolderProblem(const std::string& dir) {
   if (!error && fs::is_directory(dir)) return std::nullopt;
   return fmt::format("output.dir: cannot use {} as the output folder ({})", dir,
                      error ? error.message() : "it is not a folder");
+}
+
+StartupFailure failed(std::string message) {
+  return {StartupFailure::Cause::Failed, std::move(message)};
+}
+
+StartupFailure stopped(std::string_view step) {
+  return {StartupFailure::Cause::Stopped, fmt::format("a stop was requested {}", step)};
 }
 
 }  // namespace
@@ -82,31 +92,48 @@ RecordingContext recordingContext(const SourceDescription& source) {
   return context;
 }
 
-std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config,
-                                               const ExtraSinks& extraSinks) {
+std::expected<Daemon, StartupFailure> buildDaemon(const VemdConfig& config,
+                                                  const ExtraSinks& extraSinks,
+                                                  const StopCheck& stopRequested) {
+  const auto stop = [&] { return stopRequested && stopRequested(); };
   Daemon daemon;
+  spdlog::info("starting: opening the source {}", util::printable(config.source.spec));
   auto source = makeSource(config.source, config.camera, config.bracketing);
-  if (!source) return std::unexpected(source.error());
+  if (stop()) return std::unexpected(stopped("while opening the source"));
+  if (!source) return std::unexpected(failed(source.error()));
   daemon.source = std::move(*source);
   const SourceDescription description = daemon.source->describe();
 
-  auto pipeline = Pipeline::create(description.calibrationToml,
-                                   description.spec + " (its calibration)", config.processing);
-  if (!pipeline) return std::unexpected(pipeline.error());
+  spdlog::info("starting: building the {} x {} polar remap for the {} x {} sensor",
+               config.processing.mapWidth, config.processing.mapHeight, description.sensorWidthPx,
+               description.sensorHeightPx);
+  auto pipeline =
+      Pipeline::create(description.calibrationToml, description.spec + " (its calibration)",
+                       config.processing, stopRequested);
+  if (stop()) return std::unexpected(stopped("while building the polar remap"));
+  if (!pipeline) return std::unexpected(failed(pipeline.error()));
   if (auto mismatch = cameraMismatch(description, pipeline->calibration().camera)) {
-    return std::unexpected(*mismatch);
+    return std::unexpected(failed(*mismatch));
   }
   daemon.pipeline.emplace(std::move(*pipeline));
 
-  if (auto problem = outputFolderProblem(config.output.dir)) return std::unexpected(*problem);
-  auto sinks =
-      makeSinks(sinkConfig(config.output), recordingContext(description));
-  if (!sinks) return std::unexpected(sinks.error());
+  if (auto problem = outputFolderProblem(config.output.dir)) {
+    return std::unexpected(failed(*problem));
+  }
+  auto sinks = makeSinks(sinkConfig(config.output), recordingContext(description));
+  if (!sinks) return std::unexpected(failed(sinks.error()));
+  const auto closeSinks = [&] {
+    for (auto& sink : *sinks) (void)sink->close();  // a recording already created keeps its index
+  };
   if (extraSinks) {
     if (auto added = extraSinks(description, *sinks); !added) {
-      for (auto& sink : *sinks) (void)sink->close();  // a recording already created keeps its index
-      return std::unexpected(added.error());
+      closeSinks();
+      return std::unexpected(failed(added.error()));
     }
+  }
+  if (stop()) {
+    closeSinks();
+    return std::unexpected(stopped("while opening the sinks"));
   }
   daemon.sinks = SinkSet(std::move(*sinks));
   daemon.loop = loopOptions(config);

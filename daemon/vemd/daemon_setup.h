@@ -2,14 +2,19 @@
 // on each other: the source (which brings the camera and its calibration), the pipeline built
 // from that calibration, then the sinks (a recording's header needs the camera). Each step that
 // fails gives one sentence and builds nothing further.
+//
+// Start-up can be stopped: `stopRequested` (a signal's flag, in vemd) is asked between the steps
+// and between the rows of the polar remap, the one step whose time grows with the settings.
+// When it answers true, buildDaemon closes what it opened (a recording
+// already created gets its index) and fails with StartupFailure::Cause::Stopped.
 #pragma once
 
 #include <expected>
 #include <functional>
 #include <memory>
-#include <vector>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vemd/daemon_loop.h"
 #include "vemd/frame_source.h"
@@ -33,8 +38,18 @@ struct Daemon {
 using ExtraSinks = std::function<std::expected<void, std::string>(
     const SourceDescription& source, std::vector<std::unique_ptr<Sink>>& sinks)>;
 
-[[nodiscard]] std::expected<Daemon, std::string> buildDaemon(const VemdConfig& config,
-                                                           const ExtraSinks& extraSinks = {});
+// Asked between start-up steps and pieces of long ones; true: stop starting.
+using StopCheck = std::function<bool()>;
+
+struct StartupFailure {
+  enum class Cause { Failed, Stopped };
+  Cause cause = Cause::Failed;
+  std::string message;  // one sentence
+};
+
+[[nodiscard]] std::expected<Daemon, StartupFailure> buildDaemon(
+    const VemdConfig& config, const ExtraSinks& extraSinks = {},
+    const StopCheck& stopRequested = {});
 
 // The pieces, for tests.
 [[nodiscard]] LoopOptions loopOptions(const VemdConfig& config);

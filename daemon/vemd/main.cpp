@@ -1,7 +1,10 @@
 // vemd: the capture daemon. Parses the configuration, builds source, pipeline and sinks, runs the
 // loop until the source ends, --frames is reached, or SIGINT/SIGTERM; streams to render clients
 // ([stream], daemon/stream/stream_setup.h); docs/vemd.md.
-// Exit status: 0 after a clean stop, 1 when start-up failed or a sink failed, 2 for bad usage.
+// SIGINT/SIGTERM are caught from before start-up: start-up checks the flag between its steps and
+// the rows of the polar remap (daemon_setup.h), the loop at least every 50 ms.
+// Exit status: 0 after a clean stop (also one asked for during start-up), 1 when start-up failed or
+// a sink failed, 2 for bad usage.
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -12,6 +15,7 @@
 #include <spdlog/spdlog.h>
 
 #include "stream/stream_setup.h"
+#include "util/printable.h"
 #include "vemd/daemon_loop.h"
 #include "vemd/daemon_setup.h"
 #include "vemd/device_list.h"
@@ -69,13 +73,18 @@ int main(int argc, char** argv) {
         if (!started) return std::unexpected(started.error());
         streaming = std::move(*started);
         return {};
-      });
+      },
+      [&] { return gStopRequested.load(); });
   if (!daemon) {
-    spdlog::error("{}", daemon.error());
+    if (daemon.error().cause == StartupFailure::Cause::Stopped) {
+      spdlog::info("stopping during start-up: {}", daemon.error().message);
+      return 0;
+    }
+    spdlog::error("{}", daemon.error().message);
     return 1;
   }
   spdlog::info("running: {} into {} x {} polar maps, {} lights, filter {}, {} sink(s)",
-               daemon->source->describe().spec, config->processing.mapWidth,
+               vem::util::printable(daemon->source->describe().spec), config->processing.mapWidth,
                config->processing.mapHeight, config->processing.lightCount,
                vem::presetName(config->processing.filter), daemon->sinks.size());
   ServiceObserver observer(ServiceNotifier::fromEnvironment());

@@ -55,7 +55,8 @@ std::optional<std::string> processingOptionsProblem(const ProcessingOptions& o) 
 
 std::expected<Pipeline, std::string> Pipeline::create(const std::string& calibrationToml,
                                                       const std::string& sourceName,
-                                                      const ProcessingOptions& options) {
+                                                      const ProcessingOptions& options,
+                                                      const std::function<bool()>& stopRequested) {
   if (auto problem = processingOptionsProblem(options)) return std::unexpected(*problem);
   if (calibrationToml.empty()) {
     return std::unexpected(fmt::format(
@@ -73,16 +74,22 @@ std::expected<Pipeline, std::string> Pipeline::create(const std::string& calibra
     return std::unexpected(fmt::format(
         "{}: the camera file has no geometric section (run vemcalib fisheye)", sourceName));
   }
-  return Pipeline(std::move(*calibration), options);
+  auto remap = calib::buildPolarRemap(*calibration->lens, calibration->orientation,
+                                      calibration->camera.sensorWidthPx,
+                                      calibration->camera.sensorHeightPx, MapLayout::Hemisphere,
+                                      options.mapWidth, options.mapHeight, stopRequested);
+  if (!remap) {
+    return std::unexpected(fmt::format("{}: stopped while building the {} x {} polar remap",
+                                       sourceName, options.mapWidth, options.mapHeight));
+  }
+  return Pipeline(std::move(*calibration), options, std::move(*remap));
 }
 
-Pipeline::Pipeline(calib::CameraCalibration calibration, const ProcessingOptions& options)
+Pipeline::Pipeline(calib::CameraCalibration calibration, const ProcessingOptions& options,
+                   calib::PolarRemap remap)
     : calibration_(std::move(calibration)),
       options_(options),
-      remap_(calib::buildPolarRemap(*calibration_.lens, calibration_.orientation,
-                                    calibration_.camera.sensorWidthPx,
-                                    calibration_.camera.sensorHeightPx, MapLayout::Hemisphere,
-                                    options.mapWidth, options.mapHeight)),
+      remap_(std::move(remap)),
       filter_(presetTaps(options.filter)),
       clusteringParams_{options.clusterBudget, options.clusterCorrectionFactor,
                         MapLayout::Hemisphere} {

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <expected>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -56,10 +57,11 @@ class Pipeline {
  public:
   // Parses the camera file (`sourceName` names it in messages) and builds the remap. Fails with
   // one sentence when the file does not load, lacks its photometric or geometric section, or
-  // the options are out of range.
+  // the options are out of range. `stopRequested`, when given, is asked between the rows of the
+  // remap (the long part of start-up): true abandons the build, which then fails saying so.
   [[nodiscard]] static std::expected<Pipeline, std::string> create(
       const std::string& calibrationToml, const std::string& sourceName,
-      const ProcessingOptions& options);
+      const ProcessingOptions& options, const std::function<bool()>& stopRequested = {});
 
   // Why `frame` cannot be processed (another size or pixel format than the camera's, or codes
   // above the format's largest), or nullopt when it can. process() requires nullopt.
@@ -83,7 +85,8 @@ class Pipeline {
   [[nodiscard]] std::uint64_t lutRebuilds() const { return lutRebuilds_; }
 
  private:
-  Pipeline(calib::CameraCalibration calibration, const ProcessingOptions& options);
+  Pipeline(calib::CameraCalibration calibration, const ProcessingOptions& options,
+           calib::PolarRemap remap);
 
   void calibrate(const calib::RawFrame& frame);
   void sample();

@@ -8,8 +8,10 @@
 
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -18,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "recording/recording_reader.h"
+#include "stream_e2e/vemd_process.h"
 #include "support/command_run.h"
 #include "vemd_fixtures.h"
 
@@ -214,6 +217,33 @@ TEST_F(VemdCli, TellsTheServiceManagerReadyWatchdogStatusAndStopping) {
   EXPECT_GE(position("STATUS=stats "), 0);
   ASSERT_GE(position("STOPPING=1"), 0);
   EXPECT_LT(position("READY=1"), position("STOPPING=1"));
+}
+
+// Catches SIGTERM during start-up taking effect only once start-up is over (a 16384 x 16384 map
+// went on for 55 s after it): vemd is stopped while it builds the largest polar remap it accepts,
+// between two rows, and exits as cleanly as from the loop (0), without running a frame. The
+// 60 s bound only guards against a hang.
+TEST_F(VemdCli, SigtermWhileBuildingThePolarRemapStopsStartUpCleanly) {
+  const fs::path config = dir_ / "largest-map.toml";
+  std::ofstream(config) << "[processing]\nmap_width = 4096\nmap_height = 2048\n"
+                           "[stream]\nenabled = false\n";
+  auto vemd =
+      e2e::VemdProcess::spawn(VEMD_PATH, {"--config", config.string(), "--source", "synthetic:sky",
+                                          "--rate", "max", "--frames", "1", "--stats-every", "0"});
+  ASSERT_TRUE(vemd) << vemd.error();
+  ASSERT_TRUE((*vemd)->waitForStderr("starting: building the 4096 x 2048 polar remap",
+                                     std::chrono::seconds(60)))
+      << (*vemd)->stderrText();
+  (*vemd)->signal(SIGTERM);
+  const std::optional<int> status = (*vemd)->waitForExit(std::chrono::seconds(60));
+  ASSERT_TRUE(status) << "still running 60 s after SIGTERM:\n" << (*vemd)->stderrText();
+  const std::string err = (*vemd)->stderrText();
+  EXPECT_EQ(*status, 0) << err;
+  EXPECT_NE(err.find("stopping during start-up: a stop was requested while building the polar "
+                     "remap"),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(err.find("running:"), std::string::npos) << err;
 }
 
 // Catches vemd accepting a token no one should use (issue 16: a one-character token was
