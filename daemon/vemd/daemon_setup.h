@@ -38,7 +38,8 @@ struct Daemon {
 using ExtraSinks = std::function<std::expected<void, std::string>(
     const SourceDescription& source, std::vector<std::unique_ptr<Sink>>& sinks)>;
 
-// Asked between start-up steps and pieces of long ones; true: stop starting.
+// Asked between start-up steps and pieces of long ones; true: stop starting. vemd's also tells
+// systemd that start-up makes progress (service_observer.h).
 using StopCheck = std::function<bool()>;
 
 struct StartupFailure {

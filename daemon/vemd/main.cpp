@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   installStopHandlers();
+  ServiceObserver observer(ServiceNotifier::fromEnvironment());
   if (config->stream.enabled && !config->stream.listen.empty()) {
     // A token file that cannot be used stops vemd now, not after the long start-up steps.
     if (auto token = vem::stream::streamToken(config->stream); !token) {
@@ -74,9 +75,13 @@ int main(int argc, char** argv) {
         streaming = std::move(*started);
         return {};
       },
-      [&] { return gStopRequested.load(); });
+      [&] {
+        observer.startupProgress();
+        return gStopRequested.load();
+      });
   if (!daemon) {
     if (daemon.error().cause == StartupFailure::Cause::Stopped) {
+      observer.stopping();
       spdlog::info("stopping during start-up: {}", daemon.error().message);
       return 0;
     }
@@ -87,7 +92,6 @@ int main(int argc, char** argv) {
                vem::util::printable(daemon->source->describe().spec), config->processing.mapWidth,
                config->processing.mapHeight, config->processing.lightCount,
                vem::presetName(config->processing.filter), daemon->sinks.size());
-  ServiceObserver observer(ServiceNotifier::fromEnvironment());
   const LoopResult result =
       runDaemonLoop(*daemon->source, *daemon->pipeline, daemon->sinks, daemon->loop, gStopRequested,
                     &observer, streaming.control.get());

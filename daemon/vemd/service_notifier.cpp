@@ -39,6 +39,10 @@ void ServiceNotifier::status(std::string_view text) const {
 
 void ServiceNotifier::stopping() const { send("STOPPING=1"); }
 
+void ServiceNotifier::extendTimeout(std::chrono::microseconds by) const {
+  send("EXTEND_TIMEOUT_USEC=" + std::to_string(std::max<std::int64_t>(0, by.count())));
+}
+
 void ServiceNotifier::send(std::string_view state) const {
   if (!enabled_) return;
   const std::string text(state);

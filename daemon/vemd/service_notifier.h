@@ -32,6 +32,10 @@ class ServiceNotifier {
   void watchdog() const;                     // WATCHDOG=1
   void status(std::string_view text) const;  // STATUS=text
   void stopping() const;                     // STOPPING=1: shutdown began
+  // EXTEND_TIMEOUT_USEC=N: "still starting (or stopping): give me `by` more". Only matters once
+  // the unit's TimeoutStartSec (TimeoutStopSec) has passed: systemd then waits as long as a new
+  // message comes within `by` of the last (sd_notify(3)).
+  void extendTimeout(std::chrono::microseconds by) const;
 
   // The watchdog timeout systemd enforces for this process, when it has one.
   [[nodiscard]] std::optional<std::chrono::microseconds> watchdogTimeout() const {

@@ -13,6 +13,16 @@ ServiceObserver::ServiceObserver(ServiceNotifier notifier) : notifier_(std::move
   }
 }
 
+void ServiceObserver::startupProgress() {
+  if (!notifier_.enabled()) return;
+  const std::int64_t now = monotonicNowNs();
+  const std::int64_t intervalNs =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(kStartupProgressInterval).count();
+  if (lastExtensionNs_ != 0 && now - lastExtensionNs_ < intervalNs) return;
+  notifier_.extendTimeout(kStartupExtension);
+  lastExtensionNs_ = now;
+}
+
 void ServiceObserver::firstFrameProcessed() {
   notifier_.ready();
   notifier_.status("running: the first frame is processed");

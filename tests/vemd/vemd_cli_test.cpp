@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -169,54 +170,94 @@ TEST_F(VemdCli, PrintsAStatisticsLineEveryFewSecondsWhileRunning) {
   EXPECT_NE(r.err.find("info: final "), std::string::npos) << r.err;
 }
 
+// A datagram socket standing in for systemd's notification socket: run() starts `command` (a
+// shell line) with NOTIFY_SOCKET pointing here and reads every message while it runs, as systemd
+// does (a full socket queue would block vemd's sd_notify).
+class NotifySocket {
+ public:
+  explicit NotifySocket(const fs::path& path) : path_(path) {
+    fd_ = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_NONBLOCK, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    if (fd_ < 0 || path.string().size() >= sizeof address.sun_path) return;
+    std::copy_n(path.c_str(), path.string().size(), address.sun_path);
+    bound_ = ::bind(fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0;
+  }
+  ~NotifySocket() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  [[nodiscard]] bool bound() const { return bound_; }
+
+  // The exit status of `NOTIFY_SOCKET=PATH command`, collecting its messages.
+  int run(const std::string& command) {
+    const std::string line = "NOTIFY_SOCKET=" + path_.string() + " " + command;
+    std::atomic<bool> finished{false};
+    int status = -1;
+    std::thread daemon([&] {
+      status = std::system(line.c_str());
+      finished = true;
+    });
+    char buffer[4096];
+    for (;;) {
+      const bool last = finished.load();
+      for (ssize_t n; (n = ::recv(fd_, buffer, sizeof buffer, 0)) > 0;) {
+        messages_.emplace_back(buffer, std::size_t(n));
+      }
+      if (last) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    daemon.join();
+    return status;
+  }
+
+  // The index of the first message starting with `prefix`, or -1.
+  [[nodiscard]] int position(const std::string& prefix) const {
+    for (std::size_t i = 0; i < messages_.size(); ++i) {
+      if (messages_[i].rfind(prefix, 0) == 0) return int(i);
+    }
+    return -1;
+  }
+
+ private:
+  fs::path path_;
+  int fd_ = -1;
+  bool bound_ = false;
+  std::vector<std::string> messages_;
+};
+
 // Under systemd (NOTIFY_SOCKET, WATCHDOG_USEC set), vemd says READY=1 after its first frame,
 // pings the watchdog, publishes its report lines as STATUS= and says STOPPING=1.
 TEST_F(VemdCli, TellsTheServiceManagerReadyWatchdogStatusAndStopping) {
-  const fs::path socketPath = dir_ / "notify";
-  const int fd = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_NONBLOCK, 0);
-  ASSERT_GE(fd, 0);
-  sockaddr_un address{};
-  address.sun_family = AF_UNIX;
-  ASSERT_LT(socketPath.string().size(), sizeof address.sun_path);
-  std::copy_n(socketPath.c_str(), socketPath.string().size(), address.sun_path);
-  ASSERT_EQ(::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+  NotifySocket systemd(dir_ / "notify");
+  ASSERT_TRUE(systemd.bound());
   const fs::path path = dir_ / "sky.vem";
   writeSkyRecording(path, 12, false);
-  const std::string command = "NOTIFY_SOCKET=" + socketPath.string() + " WATCHDOG_USEC=100000 " +
-                              vemd() + " --source replay:" + path.string() +
-                              " --rate 60 --lights 16 --stats-every 0.05 2>" +
-                              (dir_ / "err").string();
-  // Read while vemd runs, as systemd does: a full socket queue would block vemd's sd_notify.
-  std::atomic<bool> finished{false};
-  int status = -1;
-  std::thread daemon([&] {
-    status = std::system(command.c_str());
-    finished = true;
-  });
-  std::vector<std::string> messages;
-  char buffer[4096];
-  for (;;) {
-    const bool last = finished.load();
-    for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) {
-      messages.emplace_back(buffer, std::size_t(n));
-    }
-    if (last) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  daemon.join();
+  const int status =
+      systemd.run("WATCHDOG_USEC=100000 " + vemd() + " --source replay:" + path.string() +
+                  " --rate 60 --lights 16 --stats-every 0.05 2>" + (dir_ / "err").string());
   ASSERT_EQ(status, 0) << readTextFile(dir_ / "err");
-  ::close(fd);
-  const auto position = [&](const std::string& prefix) {
-    for (std::size_t i = 0; i < messages.size(); ++i) {
-      if (messages[i].rfind(prefix, 0) == 0) return int(i);
-    }
-    return -1;
-  };
-  ASSERT_GE(position("READY=1"), 0);
-  EXPECT_GE(position("WATCHDOG=1"), 0);
-  EXPECT_GE(position("STATUS=stats "), 0);
-  ASSERT_GE(position("STOPPING=1"), 0);
-  EXPECT_LT(position("READY=1"), position("STOPPING=1"));
+  ASSERT_GE(systemd.position("READY=1"), 0);
+  EXPECT_GE(systemd.position("WATCHDOG=1"), 0);
+  EXPECT_GE(systemd.position("STATUS=stats "), 0);
+  ASSERT_GE(systemd.position("STOPPING=1"), 0);
+  EXPECT_LT(systemd.position("READY=1"), systemd.position("STOPPING=1"));
+}
+
+// Catches a start-up that systemd would kill at TimeoutStartSec while it still makes progress (a
+// slower machine, the largest map): vemd asks for more time (EXTEND_TIMEOUT_USEC, 10 s from each
+// message) from its start-up steps, before it is ready.
+TEST_F(VemdCli, StartUpAsksTheServiceManagerForMoreTimeWhileItMakesProgress) {
+  NotifySocket systemd(dir_ / "notify");
+  ASSERT_TRUE(systemd.bound());
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 2, false);
+  const int status =
+      systemd.run(vemd() + " --source replay:" + path.string() +
+                  " --rate max --lights 16 --stats-every 0 2>" + (dir_ / "err").string());
+  ASSERT_EQ(status, 0) << readTextFile(dir_ / "err");
+  const int extended = systemd.position("EXTEND_TIMEOUT_USEC=10000000");
+  ASSERT_GE(extended, 0);
+  EXPECT_LT(extended, systemd.position("READY=1"));
 }
 
 // Catches SIGTERM during start-up taking effect only once start-up is over (a 16384 x 16384 map
