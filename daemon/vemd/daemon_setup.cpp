@@ -54,7 +54,31 @@ StartupFailure stopped(std::string_view step) {
   return {StartupFailure::Cause::Stopped, fmt::format("a stop was requested {}", step)};
 }
 
+double mebibytes(std::uint64_t bytes) { return double(bytes) / double(1 << 20); }
+
 }  // namespace
+
+std::uint64_t framesHeld(std::size_t queueDepth) { return 2 * std::uint64_t(queueDepth) + 4; }
+
+std::optional<std::string> frameMemoryProblem(const SourceDescription& source,
+                                              std::size_t queueDepth) {
+  const std::uint64_t frameBytes =
+      std::uint64_t(source.sensorWidthPx) * std::uint64_t(source.sensorHeightPx) *
+      std::uint64_t(source.pixelFormat.channels) * sizeof(std::uint16_t);
+  if (frameBytes * framesHeld(queueDepth) <= kFrameMemoryBudgetBytes) return std::nullopt;
+  std::uint64_t depthThatFits = 0;
+  while (frameBytes * framesHeld(depthThatFits + 1) <= kFrameMemoryBudgetBytes) ++depthThatFits;
+  const std::string remedy =
+      depthThatFits > 0 ? fmt::format("set source.queue_depth to {} or less", depthThatFits)
+                        : std::string("use a smaller frame size ([camera] width_px, height_px)");
+  return fmt::format(
+      "{}: its {} x {} {} frames take {:.1f} MiB each, and with source.queue_depth = {} vemd may "
+      "hold {} of them ({:.0f} MiB), above its {:.0f} MiB budget for frames; {}",
+      util::printable(source.spec), source.sensorWidthPx, source.sensorHeightPx,
+      calib::pixelFormatName(source.pixelFormat), mebibytes(frameBytes), queueDepth,
+      framesHeld(queueDepth), mebibytes(frameBytes * framesHeld(queueDepth)),
+      mebibytes(kFrameMemoryBudgetBytes), remedy);
+}
 
 LoopOptions loopOptions(const VemdConfig& config) {
   LoopOptions loop;
@@ -103,6 +127,9 @@ std::expected<Daemon, StartupFailure> buildDaemon(const VemdConfig& config,
   if (!source) return std::unexpected(failed(source.error()));
   daemon.source = std::move(*source);
   const SourceDescription description = daemon.source->describe();
+  if (auto problem = frameMemoryProblem(description, config.source.queueDepth)) {
+    return std::unexpected(failed(*problem));
+  }
 
   spdlog::info("starting: building the {} x {} polar remap for the {} x {} sensor",
                config.processing.mapWidth, config.processing.mapHeight, description.sensorWidthPx,

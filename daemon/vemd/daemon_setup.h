@@ -4,11 +4,13 @@
 // fails gives one sentence and builds nothing further.
 //
 // Start-up can be stopped: `stopRequested` (a signal's flag, in vemd) is asked between the steps
-// and between the rows of the polar remap, the one step whose time grows with the settings.
-// When it answers true, buildDaemon closes what it opened (a recording
-// already created gets its index) and fails with StartupFailure::Cause::Stopped.
+// and between the rows of the polar remap, the one step whose time grows with the settings
+// (docs/vemd.md, "Limits"). When it answers true, buildDaemon closes what it opened (a recording
+// already created gets its index) and fails with StartupFailure::Cause::Stopped. Once the source
+// is open, frames that queue_depth would let pile up beyond kFrameMemoryBudgetBytes are refused.
 #pragma once
 
+#include <cstdint>
 #include <expected>
 #include <functional>
 #include <memory>
@@ -52,8 +54,18 @@ struct StartupFailure {
     const VemdConfig& config, const ExtraSinks& extraSinks = {},
     const StopCheck& stopRequested = {});
 
+// The most bytes of frames vemd may hold at once (docs/vemd.md, "Limits").
+inline constexpr std::uint64_t kFrameMemoryBudgetBytes = std::uint64_t(1) << 30;
+
 // The pieces, for tests.
 [[nodiscard]] LoopOptions loopOptions(const VemdConfig& config);
+// Frames vemd may hold at once with this queue depth: the queue, as many recycled spares plus two,
+// the frame being processed and the one being captured.
+[[nodiscard]] std::uint64_t framesHeld(std::size_t queueDepth);
+// Why the source's frames with source.queue_depth would take more than kFrameMemoryBudgetBytes,
+// in one sentence; nullopt when they fit.
+[[nodiscard]] std::optional<std::string> frameMemoryProblem(const SourceDescription& source,
+                                                            std::size_t queueDepth);
 [[nodiscard]] SinkConfig sinkConfig(const OutputConfig& output);
 [[nodiscard]] RecordingContext recordingContext(const SourceDescription& source);
 

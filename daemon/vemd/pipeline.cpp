@@ -15,9 +15,6 @@ namespace vem::vemd {
 
 namespace {
 
-constexpr int kMinMapSide = 4;
-constexpr int kMaxMapSide = 16384;
-
 // Microseconds between successive lap() calls.
 class StageClock {
  public:
@@ -35,10 +32,12 @@ class StageClock {
 }  // namespace
 
 std::optional<std::string> processingOptionsProblem(const ProcessingOptions& o) {
-  if (o.mapWidth < kMinMapSide || o.mapWidth > kMaxMapSide || o.mapHeight < kMinMapSide ||
-      o.mapHeight > kMaxMapSide) {
-    return fmt::format("the polar map must be {} to {} pixels on each side, not {} x {}",
-                       kMinMapSide, kMaxMapSide, o.mapWidth, o.mapHeight);
+  if (o.mapWidth < kMinMapSide || o.mapWidth > kMaxMapWidth || o.mapHeight < kMinMapSide ||
+      o.mapHeight > kMaxMapHeight) {
+    return fmt::format(
+        "the polar map must be {} to {} pixels wide and {} to {} high (start-up time and memory "
+        "grow with width x height), not {} x {}",
+        kMinMapSide, kMaxMapWidth, kMinMapSide, kMaxMapHeight, o.mapWidth, o.mapHeight);
   }
   if (o.lightCount < 1 || o.lightCount > kMaxLights) {
     return fmt::format("the light count must be 1 to {}, not {}", kMaxLights, o.lightCount);

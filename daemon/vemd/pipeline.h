@@ -37,6 +37,15 @@
 
 namespace vem::vemd {
 
+// The polar map's size limits. Start-up builds the polar remap (about 0.2 us and 12 bytes per map
+// pixel) and every frame writes the map and its importance tables (about 17 bytes per pixel
+// more), so time and memory grow with width x height; these bounds keep the largest map inside
+// the unit's start timeout and vemd's memory budget (docs/vemd.md, "Limits", has the measured
+// table).
+inline constexpr int kMinMapSide = 4;
+inline constexpr int kMaxMapWidth = 4096;
+inline constexpr int kMaxMapHeight = 2048;
+
 struct ProcessingOptions {
   int mapWidth = 1024;  // polar (hemisphere) map columns, over the azimuth
   int mapHeight = 256;  // rows, zenith to horizon

@@ -72,10 +72,11 @@ std::string TomlSectionReader::numberText(const toml::node& node) {
 }
 
 void TomlSectionReader::wholeNumber(std::string_view key, std::int64_t min, std::int64_t max,
-                                    std::int64_t& out) {
+                                    std::int64_t& out, std::string_view why) {
   const toml::node* node = find(key);
   if (node == nullptr) return;
-  const std::string expected = fmt::format("a whole number from {} to {}", min, max);
+  std::string expected = fmt::format("a whole number from {} to {}", min, max);
+  if (!why.empty()) expected += fmt::format(" ({})", why);
   if (!node->is_integer()) return fail(key, expected, describeTomlNode(*node));
   const std::int64_t value = node->as_integer()->get();
   if (value < min || value > max) return fail(key, expected, std::to_string(value));

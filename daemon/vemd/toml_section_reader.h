@@ -34,11 +34,16 @@ class TomlSectionReader {
 
   void onlyKeys(std::span<const std::string_view> known);
 
-  void wholeNumber(std::string_view key, std::int64_t min, std::int64_t max, std::int64_t& out);
+  // `why`, when given, says what the range protects, after it in the message: "expected a whole
+  // number from 4 to 4096 (start-up time and memory grow with map_width x map_height), found
+  // 16384".
+  void wholeNumber(std::string_view key, std::int64_t min, std::int64_t max, std::int64_t& out,
+                   std::string_view why = {});
   template <typename Int>
-  void wholeNumber(std::string_view key, std::int64_t min, std::int64_t max, Int& out) {
+  void wholeNumber(std::string_view key, std::int64_t min, std::int64_t max, Int& out,
+                   std::string_view why = {}) {
     std::int64_t value = std::int64_t(out);
-    wholeNumber(key, min, max, value);
+    wholeNumber(key, min, max, value, why);
     out = Int(value);
   }
   void number(std::string_view key, double min, double max, double& out);

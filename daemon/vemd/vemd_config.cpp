@@ -2,6 +2,7 @@
 
 #include <arpa/inet.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -24,15 +25,21 @@ namespace {
 
 // Ranges shared by the file and the flags.
 constexpr std::int64_t kMaxFrames = std::numeric_limits<std::int64_t>::max();
-constexpr std::int64_t kMaxQueueDepth = 1024;
+// Each queued frame is a whole sensor image (and as many recycled spares wait beside the queue):
+// docs/vemd.md, "Limits"; daemon_setup.h checks the bytes once the frame size is known.
+constexpr std::int64_t kMaxQueueDepth = 64;
+constexpr const char* kQueueDepthWhy = "every queued frame holds a whole sensor image";
 constexpr double kMaxNoiseCode = 4096.0;
-constexpr std::int64_t kMinMapSide = 4;
-constexpr std::int64_t kMaxMapSide = 16384;
+constexpr const char* kMapSizeWhy = "start-up time and memory grow with map_width x map_height";
 constexpr std::int64_t kMaxClusterBudget = std::int64_t(kMaxLights);
 constexpr double kMinCorrectionFactor = 0.1;
 constexpr double kMaxCorrectionFactor = 10.0;
 constexpr std::int64_t kMaxEvery = 1'000'000;
 constexpr std::int64_t kMaxPreviewScale = 16;
+// The preview image is map_width x preview_scale by map_height x preview_scale pixels, drawn and
+// compressed on the processing thread (about 0.1 us per pixel, and up to 20 us per light drawn):
+// docs/vemd.md, "Limits".
+constexpr std::int64_t kMaxPreviewSidePx = 4096;
 constexpr double kMaxStatsEveryS = 86400.0;
 constexpr std::int64_t kMaxSensorSide = 65536;
 constexpr double kMaxExposureUs = 60e6;  // a minute
@@ -94,7 +101,7 @@ void readSource(TomlSectionReader r, SourceConfig& s) {
   r.parsed("rate", kRateExpected, parseSourceRate, s.rate);
   r.boolean("loop", s.loop);
   r.wholeNumber("frames", 0, kMaxFrames, s.frames);
-  r.wholeNumber("queue_depth", 1, kMaxQueueDepth, s.queueDepth);
+  r.wholeNumber("queue_depth", 1, kMaxQueueDepth, s.queueDepth, kQueueDepthWhy);
   r.wholeNumber("retry_initial_ms", 1, 60'000, s.retryInitialMs);
   r.wholeNumber("retry_max_ms", 1, 600'000, s.retryMaxMs);
   r.text("camera", s.camera);
@@ -134,8 +141,8 @@ void readBracketing(TomlSectionReader r, BracketingConfig& b) {
 
 void readProcessing(TomlSectionReader r, ProcessingOptions& p) {
   r.onlyKeys(kProcessingKeys);
-  r.wholeNumber("map_width", kMinMapSide, kMaxMapSide, p.mapWidth);
-  r.wholeNumber("map_height", kMinMapSide, kMaxMapSide, p.mapHeight);
+  r.wholeNumber("map_width", kMinMapSide, kMaxMapWidth, p.mapWidth, kMapSizeWhy);
+  r.wholeNumber("map_height", kMinMapSide, kMaxMapHeight, p.mapHeight, kMapSizeWhy);
   r.wholeNumber("lights", 1, std::int64_t(kMaxLights), p.lightCount);
   std::size_t sampler = p.sampler == SamplerKind::Havran ? 0 : 1;
   r.choice("sampler", kSamplerNames, sampler);
@@ -158,7 +165,25 @@ void readClustering(TomlSectionReader r, ProcessingOptions& p) {
            p.clusterCorrectionFactor);
 }
 
-void readOutput(TomlSectionReader r, OutputConfig& o) {
+// The largest preview_scale for `mapWidth` x `mapHeight` maps (at least 1: maps are at most
+// kMaxPreviewSidePx wide).
+std::int64_t maxPreviewScale(int mapWidth, int mapHeight) {
+  const std::int64_t longerSide = std::max(mapWidth, mapHeight);
+  return std::clamp<std::int64_t>(kMaxPreviewSidePx / longerSide, 1, kMaxPreviewScale);
+}
+
+// Why the preview would be too large, as "expected ..." (for the file) or nullopt; checked only
+// while the preview is on, so the shipped preview_scale = 2 stands beside any map without one.
+std::optional<std::string> previewScaleExpected(const OutputConfig& o, const ProcessingOptions& p) {
+  const std::int64_t most = maxPreviewScale(p.mapWidth, p.mapHeight);
+  if (o.previewEvery == 0 || o.previewScale <= most) return std::nullopt;
+  return fmt::format(
+      "a whole number from 1 to {} while output.preview_every is on (the preview is the {} x {} "
+      "map times preview_scale, at most {} pixels on a side)",
+      most, p.mapWidth, p.mapHeight, kMaxPreviewSidePx);
+}
+
+void readOutput(TomlSectionReader r, OutputConfig& o, const ProcessingOptions& p) {
   r.onlyKeys(kOutputKeys);
   r.text("dir", o.dir);
   r.text("jsonl", o.jsonl);
@@ -167,6 +192,9 @@ void readOutput(TomlSectionReader r, OutputConfig& o) {
   r.wholeNumber("preview_every", 0, kMaxEvery, o.previewEvery);
   r.boolean("preview_numbered", o.previewNumbered);
   r.wholeNumber("preview_scale", 1, kMaxPreviewScale, o.previewScale);
+  if (auto expected = previewScaleExpected(o, p)) {
+    r.fail("preview_scale", *expected, std::to_string(o.previewScale));
+  }
 }
 
 void readStats(TomlSectionReader r, StatsConfig& s) {
@@ -351,6 +379,19 @@ void applyFlags(const Flags& f, VemdConfig& c) {
   if (f.streamListen) c.stream.listen = *f.streamListen;
 }
 
+// --preview-every may turn on a preview too large for the file's map and scale.
+std::optional<std::string> previewProblem(const VemdConfig& c) {
+  if (!previewScaleExpected(c.output, c.processing)) return std::nullopt;
+  return fmt::format(
+      "--preview-every: the preview would be {} x {} pixels (the {} x {} map times "
+      "output.preview_scale = {}), where at most {} on a side was expected; set "
+      "output.preview_scale to {}",
+      std::int64_t(c.processing.mapWidth) * c.output.previewScale,
+      std::int64_t(c.processing.mapHeight) * c.output.previewScale, c.processing.mapWidth,
+      c.processing.mapHeight, c.output.previewScale, kMaxPreviewSidePx,
+      maxPreviewScale(c.processing.mapWidth, c.processing.mapHeight));
+}
+
 // The flags may move the listener beyond loopback: the file's rule again.
 std::optional<std::string> streamProblem(const StreamConfig& s) {
   const auto address = parseListenAddress(s.listen);
@@ -468,7 +509,8 @@ std::expected<VemdConfig, std::string> parseConfig(const std::string& text,
   readProcessing({section(document, "processing", top), "processing", status}, config.processing);
   readFilter({section(document, "filter", top), "filter", status}, config.processing);
   readClustering({section(document, "clustering", top), "clustering", status}, config.processing);
-  readOutput({section(document, "output", top), "output", status}, config.output);
+  readOutput({section(document, "output", top), "output", status}, config.output,
+             config.processing);
   readStats({section(document, "stats", top), "stats", status}, config.stats);
   readStream({section(document, "stream", top), "stream", status}, config.stream);
   if (!status.ok()) return std::unexpected(*status.failure);
@@ -515,6 +557,9 @@ std::expected<VemdConfig, CommandLineExit> parseCommandLine(const std::vector<st
   }
   applyFlags(flags, config);
   if (auto problem = streamProblem(config.stream)) {
+    return std::unexpected(CommandLineExit{2, "", *problem + "\n"});
+  }
+  if (auto problem = previewProblem(config)) {
     return std::unexpected(CommandLineExit{2, "", *problem + "\n"});
   }
   return config;

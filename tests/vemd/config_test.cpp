@@ -105,10 +105,43 @@ TEST(VemdConfig, OutOfRangeValueIsRefusedWithExpectedAndFound) {
   EXPECT_EQ(refusal("[stats]\nevery_s = -1.5\n"),
             "vemd.toml: stats.every_s: expected a number from 0 to 86400, found -1.5");
   EXPECT_EQ(refusal("[source]\nqueue_depth = 5000\n"),
-            "vemd.toml: source.queue_depth: expected a whole number from 1 to 1024, found 5000");
+            "vemd.toml: source.queue_depth: expected a whole number from 1 to 64 (every queued "
+            "frame holds a whole sensor image), found 5000");
   EXPECT_EQ(refusal("[source]\nretry_initial_ms = 500\nretry_max_ms = 100\n"),
             "vemd.toml: source.retry_max_ms: expected at least source.retry_initial_ms (500), "
             "found 100");
+}
+
+// Catches the issue-16 map: 16384 x 16384 took 60 s and 3.2 GB to start, past the unit's
+// TimeoutStartSec. The sentence gives the range and why it is there.
+TEST(VemdConfig, MapBeyondTheStartUpLimitIsRefusedWithTheRangeAndWhy) {
+  EXPECT_EQ(refusal("[processing]\nmap_width = 16384\n"),
+            "vemd.toml: processing.map_width: expected a whole number from 4 to 4096 (start-up "
+            "time and memory grow with map_width x map_height), found 16384");
+  EXPECT_EQ(refusal("[processing]\nmap_height = 4096\n"),
+            "vemd.toml: processing.map_height: expected a whole number from 4 to 2048 (start-up "
+            "time and memory grow with map_width x map_height), found 4096");
+  auto largest = parseConfig("[processing]\nmap_width = 4096\nmap_height = 2048\n", "vemd.toml");
+  ASSERT_TRUE(largest) << largest.error();
+  EXPECT_EQ(largest->processing.mapWidth, 4096);
+}
+
+// Catches a preview image far larger than the map: preview_scale 16 on a 4096-wide map made a
+// 65536-pixel-wide image (3 GB) on the processing thread. Checked only while the preview is on,
+// so the shipped preview_scale = 2 stands beside the largest map.
+TEST(VemdConfig, PreviewBeyondItsSizeLimitForTheMapIsRefused) {
+  EXPECT_EQ(refusal("[processing]\nmap_width = 4096\nmap_height = 1024\n"
+                    "[output]\npreview_every = 10\npreview_scale = 16\n"),
+            "vemd.toml: output.preview_scale: expected a whole number from 1 to 1 while "
+            "output.preview_every is on (the preview is the 4096 x 1024 map times preview_scale, "
+            "at most 4096 pixels on a side), found 16");
+  EXPECT_NE(refusal("[output]\npreview_every = 1\npreview_scale = 5\n"), "");  // 1024 x 5
+  auto largest = parseConfig("[output]\npreview_every = 1\npreview_scale = 4\n", "vemd.toml");
+  ASSERT_TRUE(largest) << largest.error();
+  EXPECT_EQ(largest->output.previewScale, 4);
+  auto off =
+      parseConfig("[processing]\nmap_width = 4096\n[output]\npreview_scale = 2\n", "vemd.toml");
+  ASSERT_TRUE(off) << off.error();
 }
 
 TEST(VemdConfig, WrongTypeIsRefused) {
@@ -153,6 +186,19 @@ TEST(VemdConfig, MissingFileIsRefused) {
 }
 
 using VemdConfigFiles = VemdFiles;
+
+// Catches --preview-every turning on a preview the file's map and scale make too large.
+TEST_F(VemdConfigFiles, PreviewFlagBeyondTheSizeLimitIsRefused) {
+  const fs::path path = dir_ / "large-map.toml";
+  std::ofstream(path) << "[processing]\nmap_width = 4096\nmap_height = 2048\n";
+  auto parsed = vemd::parseCommandLine({"vemd", "--config", path.string(), "--preview-every", "1"});
+  ASSERT_FALSE(parsed);
+  EXPECT_EQ(parsed.error().exitCode, 2);
+  EXPECT_EQ(parsed.error().err,
+            "--preview-every: the preview would be 8192 x 4096 pixels (the 4096 x 2048 map times "
+            "output.preview_scale = 2), where at most 4096 on a side was expected; set "
+            "output.preview_scale to 1\n");
+}
 
 TEST_F(VemdConfigFiles, FlagsOverrideTheFile) {
   const fs::path file = dir_ / "vemd.toml";
@@ -318,8 +364,7 @@ TEST_F(VemdConfigFiles, BracketingAReplayIsRefused) {
   bracketing.count = 3;
   auto made = vemd::makeSource(source, {}, bracketing);
   ASSERT_FALSE(made);
-  EXPECT_NE(made.error().find("bracketing needs a camera with exposure control"),
-            std::string::npos)
+  EXPECT_NE(made.error().find("bracketing needs a camera with exposure control"), std::string::npos)
       << made.error();
 }
 

@@ -1,5 +1,6 @@
 // vemd's start-up (daemon/vemd/daemon_setup.h): a stop asked for while it builds stops it between
-// steps or between the polar remap's rows, closing what it opened.
+// steps or between the polar remap's rows, closing what it opened; the map size and the frames a
+// queue may hold are bounded (docs/vemd.md, "Limits").
 #include "vemd/daemon_setup.h"
 
 #include <atomic>
@@ -98,6 +99,50 @@ TEST_F(Startup, StopRequestedAfterTheSinksOpenedClosesTheRecordingWithItsIndex) 
   auto reader = recording::RecordingReader::open(dir_ / "out.vem");
   ASSERT_TRUE(reader) << reader.error().message;
   EXPECT_TRUE(reader->hasIndex());
+}
+
+// Catches a queue whose frames could take more memory than vemd's budget: 4096 x 3072 RGB16
+// frames are 72 MiB, so 8 queued (20 held) would be 1440 MiB; 5 (14 held, 1008 MiB) fit.
+TEST(FrameMemory, QueueOfLargeFramesBeyondTheBudgetIsRefusedNamingTheDepthThatFits) {
+  vemd::SourceDescription source;
+  source.spec = "v4l2:/dev/video0";
+  source.sensorWidthPx = 4096;
+  source.sensorHeightPx = 3072;
+  source.pixelFormat = *calib::parsePixelFormat("RGB16");
+  EXPECT_EQ(vemd::frameMemoryProblem(source, 8),
+            "v4l2:/dev/video0: its 4096 x 3072 RGB16 frames take 72.0 MiB each, and with "
+            "source.queue_depth = 8 vemd may hold 20 of them (1440 MiB), above its 1024 MiB "
+            "budget for frames; set source.queue_depth to 5 or less");
+  EXPECT_EQ(vemd::frameMemoryProblem(source, 5), std::nullopt);
+  EXPECT_TRUE(vemd::frameMemoryProblem(source, 6).has_value());
+}
+
+// Catches a frame so large that not even a queue of one fits: the sentence asks for smaller
+// frames instead of an impossible depth.
+TEST(FrameMemory, FramesTooLargeForAnyQueueAskForASmallerFrameSize) {
+  vemd::SourceDescription source;
+  source.spec = "replay:huge.vem";
+  source.sensorWidthPx = 16384;
+  source.sensorHeightPx = 16384;
+  source.pixelFormat = *calib::parsePixelFormat("RGB16");
+  const auto problem = vemd::frameMemoryProblem(source, 1);
+  ASSERT_TRUE(problem);
+  EXPECT_NE(problem->find("use a smaller frame size ([camera] width_px, height_px)"),
+            std::string::npos)
+      << *problem;
+}
+
+// Catches the pipeline accepting a map beyond the start-up limit when it is built in code (the
+// stream's control path and tests build ProcessingOptions without the configuration file).
+TEST(PipelineLimits, MapBeyondTheStartUpLimitIsRefusedByThePipelineToo) {
+  vemd::ProcessingOptions options = smallProcessing();
+  options.mapWidth = 16384;
+  options.mapHeight = 16384;
+  auto pipeline = vemd::Pipeline::create(smallCameraToml(), "cam", options);
+  ASSERT_FALSE(pipeline);
+  EXPECT_EQ(pipeline.error(),
+            "the polar map must be 4 to 4096 pixels wide and 4 to 2048 high (start-up time and "
+            "memory grow with width x height), not 16384 x 16384");
 }
 
 }  // namespace
