@@ -5,7 +5,14 @@
 
 #include <spdlog/spdlog.h>
 
+#include "util/printable.h"
+
 namespace vem::vemd {
+
+namespace {
+// A source's message may quote what a camera reported (its name, a driver's text): escaped.
+constexpr std::size_t kLoggedMessageBytes = 1024;
+}  // namespace
 
 CaptureThread::CaptureThread(FrameSource& source, FrameQueue<CapturedFrame>& frames,
                              FrameQueue<CapturedFrame>& spares, const CaptureOptions& options)
@@ -45,7 +52,7 @@ void CaptureThread::run() {
     if (stop_.load()) break;
     if (!frame) {
       if (frame.error().cause == SourceErrorCause::EndOfStream) {
-        spdlog::info("source: {}", frame.error().message);
+        spdlog::info("source: {}", util::printable(frame.error().message, kLoggedMessageBytes));
         endOfStream_.store(true);
         failure_.store(int(SourceErrorCause::EndOfStream));
         break;
@@ -73,9 +80,9 @@ bool CaptureThread::backOff(const SourceError& error) {
   sourceErrors_.fetch_add(1);
   ++failedAttempts_;
   if (!failing_ || failingCause_ != error.cause) {
-    spdlog::warn("source: {} ({}); retrying every {} to {} ms", error.message,
-                 sourceErrorName(error.cause), options_.retryInitial.count(),
-                 options_.retryMax.count());
+    spdlog::warn("source: {} ({}); retrying every {} to {} ms",
+                 util::printable(error.message, kLoggedMessageBytes), sourceErrorName(error.cause),
+                 options_.retryInitial.count(), options_.retryMax.count());
     failing_ = true;
     failingCause_ = error.cause;
     failure_.store(int(error.cause));

@@ -6,6 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "util/printable.h"
 #include "vemd/capture_thread.h"
 #include "vemd/frame_queue.h"
 
@@ -69,7 +70,7 @@ class ProcessingLoop {
 
   LoopResult finish(StopReason reason, const QueueCounters& queue, std::uint64_t sourceErrors) {
     for (const DroppedSink& failed : sinks_.closeAll()) {
-      spdlog::error("sink {}: {}", failed.name, failed.message);
+      spdlog::error("sink {}: {}", failed.name, util::printable(failed.message, 1024));
       ++sinkFailures_;
     }
     LoopResult result{reason, stats_.totals(monotonicNowNs(), queue, sourceErrors), sinkFailures_};
@@ -86,7 +87,7 @@ class ProcessingLoop {
     const auto start = std::chrono::steady_clock::now();
     for (const DroppedSink& failed : sinks_.consume(processed)) {
       spdlog::error("sink {}: {}; the sink is dropped, the others go on", failed.name,
-                    failed.message);
+                    util::printable(failed.message, 1024));
       ++sinkFailures_;
     }
     return std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
@@ -95,9 +96,9 @@ class ProcessingLoop {
 
   void applyControl(const QueueCounters& queue, const CaptureThread& capture) {
     if (control_ == nullptr) return;
-    control_->betweenFrames(pipeline_, {stats_.processed(), queue.dropped, refusedTotal_,
-                                        capture.sourceErrors(), lastProcessedNs_,
-                                        capture.failure()});
+    control_->betweenFrames(
+        pipeline_, {stats_.processed(), queue.dropped, refusedTotal_, capture.sourceErrors(),
+                    lastProcessedNs_, capture.failure()});
   }
 
   void refuse(const CapturedFrame& captured, const std::string& problem) {
