@@ -4,11 +4,20 @@
 # the documentation, Depends from the real libraries, and a postinst that creates the "vemcast"
 # user. Packs the build into WORK (no root, no network) and reads the package with dpkg-deb; it
 # never installs it. Needs the four tools built (CI runs it after the full build).
-# Usage: package_test.sh BUILD_DIR SOURCE_DIR WORK_DIR
+# Usage: package_test.sh BUILD_DIR SOURCE_DIR WORK_DIR TOOL_FILE...  (the four built tools)
+# Exits 77 (ctest SKIP_RETURN_CODE) when a tool is not built: the sanitizer build folder builds
+# only the test targets and some tools.
 set -eu
 build=$1
 source=$2
 work=$3
+shift 3
+for tool_file in "$@"; do
+  if [ ! -x "$tool_file" ]; then
+    echo "$tool_file is not built (this test needs the full build: cmake --build $build): skipped"
+    exit 77
+  fi
+done
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 rm -rf "$work"
