@@ -27,21 +27,28 @@ cat >"$fake/adduser" <<'FAKE'
 #!/bin/sh
 # adduser --system [--group] ... NAME, or adduser [--quiet] USER GROUP, on $VEM_FAKE_DB.
 echo "adduser $*" >>"$VEM_FAKE_CALLS"
-system=no; group=no; names=""
-for arg in "$@"; do
-  case $arg in
+system=no; group=no; ingroup=""; names=""
+while [ $# -gt 0 ]; do
+  case $1 in
     --system) system=yes ;;
     --group) group=yes ;;
+    --ingroup) ingroup=$2; shift ;;
     --*) ;;
-    *) names="$names $arg" ;;
+    *) names="$names $1" ;;
   esac
+  shift
 done
 set -- $names
 if [ $system = yes ]; then
   grep -qx "$1" "$VEM_FAKE_DB/passwd" && exit 0          # an existing system user: left alone
-  grep -q "^$1:" "$VEM_FAKE_DB/group" && { echo "adduser: the group $1 already exists" >&2; exit 1; }
+  if [ $group = yes ]; then                                # like adduser 3.134: refused
+    grep -q "^$1:" "$VEM_FAKE_DB/group" && { echo "adduser: the group $1 already exists" >&2; exit 1; }
+    echo "$1:" >>"$VEM_FAKE_DB/group"
+  fi
+  if [ -n "$ingroup" ]; then
+    grep -q "^$ingroup:" "$VEM_FAKE_DB/group" || { echo "adduser: no group $ingroup" >&2; exit 1; }
+  fi
   echo "$1" >>"$VEM_FAKE_DB/passwd"
-  [ $group = yes ] && echo "$1:" >>"$VEM_FAKE_DB/group"
   exit 0
 fi
 [ $# -eq 2 ] || { echo "adduser: expected USER GROUP" >&2; exit 1; }
@@ -103,6 +110,15 @@ run postinst configure ""
 grep -qx vemcast "$db/passwd" || fail "postinst configure (no video group): expected the user vemcast created, found none"
 [ "$(count '^adduser --quiet vemcast video')" = 0 ] ||
   fail "postinst configure (no video group): expected no 'adduser vemcast video', found: $(cat "$calls")"
+
+# A group "vemcast" left without its user (by an admin, or an older install): the user joins it.
+reset_db 'vemcast:
+video:
+'
+run postinst configure ""
+[ "$(count '^adduser --system --ingroup vemcast --no-create-home --quiet vemcast$')" = 1 ] ||
+  fail "postinst configure (group vemcast exists): expected 'adduser --system --ingroup vemcast --no-create-home --quiet vemcast', found: $(cat "$calls")"
+grep -qx vemcast "$db/passwd" || fail "postinst configure (group vemcast exists): expected the user vemcast created, found none"
 
 # Removal, purge, failed-upgrade paths: exit 0, no user created or deleted.
 reset_db 'video:
