@@ -39,7 +39,7 @@ install(CODE "
 ")
 install(SCRIPT ${CMAKE_CURRENT_LIST_DIR}/VemInstallSystemFiles.cmake)
 
-# The documentation, with the images its pages show (about 250 kB in all).
+# The documentation, with the images its pages show (about 360 kB in all).
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
         FILES_MATCHING PATTERN "*.md" PATTERN "*.png" PATTERN "*.svg")
