@@ -12,6 +12,7 @@ packages=(
   libembree-dev libglfw3-dev libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libegl-mesa0
   libtinyobjloader-dev libtinygltf-dev xvfb xauth librsvg2-bin
   libgtest-dev libgmock-dev libbenchmark-dev
+  dpkg-dev file                  # cpack -G DEB: dpkg-shlibdeps finds the Depends
   clang-14 libclang-rt-14-dev
 )
 missing=()
