@@ -56,6 +56,12 @@ struct Skip {
 
 constexpr Skip kSkips[] = {
     {"bash .ci/run", "the whole test suite, which is what runs this test"},
+    {"cmake --install build",
+     "it writes to /usr/local; the install test (install_puts_tools_on_path) installs the same rules "
+     "into a staging folder and runs the installed tools"},
+    {"cd build && cpack -G DEB && apt install ./vemcast_*.deb",
+     "installing a package changes the machine; the package test (package_deb_holds_install) builds "
+     "the .deb and inspects its files, conffiles and maintainer scripts"},
     {"cmake --build build --target render-bench",
      "the render study (tens of minutes); the bench and render-bench targets run it"},
 };
@@ -193,14 +199,18 @@ TEST(ReadmeCommands, RunningTheRenderClientRunsAsWritten) {
   runSection("Running the render client", "render");
 }
 
+TEST(ReadmeCommands, InstallingIsLeftToTheInstallAndPackageTests) {
+  runSection("Installing", "installing");
+}
+
 TEST(ReadmeCommands, TheCalibrationWalkThroughRunsAsWritten) {
   runSection("Calibrating a camera", "calibration");
 }
 
 // Every shell command sits under a section a test above runs; every rule still matches the README.
 TEST(ReadmeCommands, EveryShellCommandIsRunOrSkippedForAStatedReason) {
-  const std::vector<std::string> sections{"", "Running the daemon", "Running the render client",
-                                          "Calibrating a camera"};
+  const std::vector<std::string> sections{"", "Installing", "Running the daemon",
+                                          "Running the render client", "Calibrating a camera"};
   const std::vector<ShellCommand> commands = shellCommands(readme());
   for (const ShellCommand& c : commands) {
     EXPECT_NE(std::find(sections.begin(), sections.end(), c.heading), sections.end())
