@@ -186,13 +186,6 @@ int runViewer(const ViewerOptions& options) {
     spdlog::error("{}", scene.error());
     return EXIT_FAILURE;
   }
-  if (options.renderer == RendererKind::Reference &&
-      (!options.connectUrl.empty() || !options.lightFile.empty())) {
-    spdlog::error(
-        "--renderer reference integrates an environment map: give it --map FILE, not "
-        "--connect or --lights");
-    return EXIT_FAILURE;
-  }
   const RenderPlan wanted = planFor(*scene, requestFor(options, InputFacts{}));
   auto input = openInput(options, wanted.cubeMap);
   if (!input) {
