@@ -5,14 +5,16 @@
 namespace vem::view {
 namespace {
 
-// "3.4 frames/s, 290.1 ms each" for two frames or more.
+// "3.4 frames/s, 290.1 ms each" for two frames or more; below one frame a second, two
+// significant digits ("0.043 frames/s"), not "0.0".
 std::string rateText(const DrawnFrames& drawn) {
   const double meanMs = drawn.renderMsSum / double(drawn.count);
   if (drawn.seconds <= 0.0) {
     return fmt::format("{:.1f} ms each", meanMs);
   }
-  return fmt::format("{:.1f} frames/s, {:.1f} ms each", double(drawn.count) / drawn.seconds,
-                     meanMs);
+  const double rate = double(drawn.count) / drawn.seconds;
+  return rate >= 1.0 ? fmt::format("{:.1f} frames/s, {:.1f} ms each", rate, meanMs)
+                     : fmt::format("{:.2g} frames/s, {:.1f} ms each", rate, meanMs);
 }
 
 }  // namespace

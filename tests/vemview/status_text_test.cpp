@@ -34,6 +34,12 @@ TEST(StatusText, RateIsOverTheFramesDrawnInTheirWallTime) {
   EXPECT_EQ(drawnFramesText(DrawnFrames{12, 4.0, 12 * 80.0}), "12 frames, 3.0 frames/s, 80.0 ms each");
 }
 
+// Three frames of 22 s each were "0.0 frames/s".
+TEST(StatusText, SlowRateKeepsTwoSignificantDigitsNotZero) {
+  EXPECT_EQ(drawnFramesText(DrawnFrames{3, 69.77, 3 * 22355.3}),
+            "3 frames, 0.043 frames/s, 22355.3 ms each");
+}
+
 // A clustered light file said "lights 11 | shadowed 11 | lights 256, shadow maps 64".
 TEST(StatusText, ClusteredLightsAreOneNamedCountNotThreeNumbers) {
   const LightCounts counts = lightCountsOf(shadingWith(11, 11), 256, 64);
