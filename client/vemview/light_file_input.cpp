@@ -67,7 +67,8 @@ std::size_t clusteredFromOf(const nlohmann::json& value) {
   }
   std::size_t members = 0;
   for (const auto& entry : value["lights"]) {
-    if (entry.contains("members") && entry["members"].is_array()) members += entry["members"].size();
+    if (entry.contains("members") && entry["members"].is_array())
+      members += entry["members"].size();
   }
   return members;
 }
@@ -147,8 +148,9 @@ std::expected<std::unique_ptr<LightInput>, std::string> openLightFileInput(
     return std::unexpected(fmt::format("{}: the light file holds no frame", path));
   }
   InputFacts facts;
-  facts.description = fmt::format("light file {} ({} frames, {} lights{})", path, frames.size(),
-                                  frames.front()->set.lights.size(), clustered ? ", clustered" : "");
+  facts.description =
+      fmt::format("light file {} ({} frames, {} lights{})", path, frames.size(),
+                  frames.front()->set.lights.size(), clustered ? ", clustered" : "");
   facts.layout = MapLayout::Hemisphere;
   facts.clustered = clustered;
   facts.cubeMaps = false;

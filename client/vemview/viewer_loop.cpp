@@ -152,9 +152,9 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   record.timing["shadowed"] = v.shading.shadowCasters.size();
   record.timing["shading_lights_ms"] = shadingMs;
   record.timing["render_ms"] = decision.redraw ? v.last.renderMs : 0.0;
-  v.status.add(decision.redraw, v.last.renderMs,
-               lightCountsOf(v.shading, clusteredFrom(v, *frame, count),
-                             v.plan.lighting.shadowedCount));
+  v.status.add(
+      decision.redraw, v.last.renderMs,
+      lightCountsOf(v.shading, clusteredFrom(v, *frame, count), v.plan.lighting.shadowedCount));
   v.renderer->present(tone, v.status.overlay());
   if (v.writer) {
     if (auto written = v.writer->write(record, v.last.image, tone); !written) {

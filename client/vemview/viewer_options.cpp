@@ -71,10 +71,12 @@ void addOutputOptions(CLI::App& app, ViewerOptions& o) {
   app.add_flag("!--no-png", o.png, "Do not write PNG frames");
   app.add_flag("!--no-exr", o.exr, "Do not write EXR frames");
   choiceOf<RendererKind>(
-      app.add_option("--renderer", o.renderer,
-                     "gl (OpenGL, shadow maps), embree (same lights, ray-traced shadows), reference "
-                     "(Monte Carlo over the whole map; needs --map)"),
-      {{"gl", RendererKind::Gl}, {"embree", RendererKind::Embree},
+      app.add_option(
+          "--renderer", o.renderer,
+          "gl (OpenGL, shadow maps), embree (same lights, ray-traced shadows), reference "
+          "(Monte Carlo over the whole map; needs --map)"),
+      {{"gl", RendererKind::Gl},
+       {"embree", RendererKind::Embree},
        {"reference", RendererKind::Reference}})
       ->default_str("gl");
   app.add_option("--width", o.widthPx, "Image width in pixels")
@@ -132,10 +134,10 @@ void addCameraOptions(CLI::App& app, ViewerOptions& o) {
 // range ("16..8192"). Choice lists are left to util/cli_conventions.h ("gl|embree|reference").
 void plainValueNames(CLI::App& app) {
   static const std::map<std::string, std::string> kNames{
-      {"--connect", "URL"},       {"--token", "TOKEN"},     {"--lights", "FILE"},
-      {"--map", "FILE"},          {"--scene", "NAME|FILE"}, {"--frames", "N"},
-      {"--out", "DIR"},           {"--screenshot", "FILE"}, {"--target-ms", "MS"},
-      {"--orbit", "DEGREES"},     {"--azimuth", "DEGREES"}, {"--timeout", "SECONDS"}};
+      {"--connect", "URL"},   {"--token", "TOKEN"},     {"--lights", "FILE"},
+      {"--map", "FILE"},      {"--scene", "NAME|FILE"}, {"--frames", "N"},
+      {"--out", "DIR"},       {"--screenshot", "FILE"}, {"--target-ms", "MS"},
+      {"--orbit", "DEGREES"}, {"--azimuth", "DEGREES"}, {"--timeout", "SECONDS"}};
   static const std::regex kRange{R"(^\S+ in \[(\S+) - (\S+)\]$)"};
   for (CLI::Option* option : app.get_options()) {
     if (const auto named = kNames.find(option->get_name()); named != kNames.end()) {

@@ -31,7 +31,8 @@ TEST(StatusText, OneDrawnFrameIsOneFrameInItsTimeNotARate) {
 }
 
 TEST(StatusText, RateIsOverTheFramesDrawnInTheirWallTime) {
-  EXPECT_EQ(drawnFramesText(DrawnFrames{12, 4.0, 12 * 80.0}), "12 frames, 3.0 frames/s, 80.0 ms each");
+  EXPECT_EQ(drawnFramesText(DrawnFrames{12, 4.0, 12 * 80.0}),
+            "12 frames, 3.0 frames/s, 80.0 ms each");
 }
 
 // Three frames of 22 s each were "0.0 frames/s".
@@ -54,8 +55,9 @@ TEST(StatusText, SummaryCountsDrawnAndNotRedrawnFrames) {
   EXPECT_EQ(summaryText(DrawnFrames{1, 9.0, 31.0}, 2, counts),
             "1 frame drawn in 31.0 ms, 2 not redrawn (nothing changed) | lights 16 | shadow maps 8 "
             "of 8");
-  EXPECT_EQ(summaryText(DrawnFrames{3, 1.5, 300.0}, 0, counts),
-            "3 frames drawn in 1.50 s (2.0 frames/s, 100.0 ms each) | lights 16 | shadow maps 8 of 8");
+  EXPECT_EQ(
+      summaryText(DrawnFrames{3, 1.5, 300.0}, 0, counts),
+      "3 frames drawn in 1.50 s (2.0 frames/s, 100.0 ms each) | lights 16 | shadow maps 8 of 8");
 }
 
 struct Printed {
@@ -90,7 +92,8 @@ TEST(StatusLine, PlanIsPrintedOnceNotOnEveryStatusLine) {
   ASSERT_EQ(printed.lines.size(), 4U);
   EXPECT_EQ(printed.lines[0], "plan: " + plan.describe());
   for (std::size_t i = 1; i < printed.lines.size(); ++i) {
-    EXPECT_EQ(printed.lines[i], "2 frames, 2.0 frames/s, 40.0 ms each | lights 256 | shadow maps 64 of 64");
+    EXPECT_EQ(printed.lines[i],
+              "2 frames, 2.0 frames/s, 40.0 ms each | lights 256 | shadow maps 64 of 64");
   }
   PlanRequest fewer;
   fewer.lightCount = 64;
@@ -112,7 +115,8 @@ TEST(StatusLine, RateCountsOnlyDrawnFramesNotTheWindowsIdleLoop) {
   for (int i = 0; i < 60; ++i) status.add(false, 27.0, counts);
   status.maybePrint(t0 + 2s);
   ASSERT_EQ(printed.lines.size(), 1U);
-  EXPECT_EQ(printed.lines[0], "1 frame in 27.0 ms | lights 256 (11 clusters) | shadow maps 11 of 64");
+  EXPECT_EQ(printed.lines[0],
+            "1 frame in 27.0 ms | lights 256 (11 clusters) | shadow maps 11 of 64");
   status.printSummary(t0 + 3s, "");
   ASSERT_EQ(printed.lines.size(), 2U);
   EXPECT_EQ(printed.lines[1],
