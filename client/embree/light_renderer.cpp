@@ -97,9 +97,10 @@ void renderRow(const Frame& frame, const scene::OrbitCamera& camera, int row,
     if (const std::optional<ShadingPoint> p = shadingPointOf(frame.scene, ray)) {
       image.set(x, row, shade(frame, *p), true);
     } else {
-      const glm::vec3 background = frame.cube != nullptr
-                                       ? render::sampleCubeMap(*frame.cube, ray.dirWorld)
-                                       : glm::vec3(0.0F);
+      const glm::vec3 background =
+          frame.cube != nullptr
+              ? render::sampleBackground(*frame.cube, frame.options.cubeCoverage, ray.dirWorld)
+              : glm::vec3(0.0F);
       image.set(x, row, background, false);
     }
   }

@@ -30,6 +30,9 @@ namespace vem::embree {
 struct LightRenderOptions {
   bool shadows = true;  // false: V = 1 for every light (to compare with unshadowed renders)
   int threadCount = 2;  // <= 0: one per hardware thread
+  // What the cube map covers: nothing below the horizon of a Hemisphere one (vemd's stream), so
+  // the background is black there (render::sampleBackground).
+  MapLayout cubeCoverage = MapLayout::Sphere;
 };
 
 // widthPx, heightPx >= 1. `cube` may be null (black background, mirrors lit by the lights).

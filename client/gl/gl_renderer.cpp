@@ -177,6 +177,7 @@ void GlRenderer::Impl::backgroundPass(const scene::OrbitCamera& camera) const {
   background.set("uWorldFromClip", glm::inverse(clipFromWorld));
   background.set("uEye", camera.eyeWorld());
   background.set("uViewportPx", glm::vec2(float(options.widthPx), float(options.heightPx)));
+  background.set("uHemisphere", options.environmentCoverage == MapLayout::Hemisphere ? 1 : 0);
   glBindVertexArray(emptyVertexArray.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDepthMask(GL_TRUE);

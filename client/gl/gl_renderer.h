@@ -29,6 +29,7 @@
 #include "client/scene/orbit_camera.h"
 #include "client/scene/scene.h"
 #include "core/cube_map.h"
+#include "core/env_map.h"
 
 namespace vem::gl {
 
@@ -38,6 +39,9 @@ struct GlRendererOptions {
   int shadowMapPx = 256;                              // one tile's side
   std::size_t maxShadowMaps = render::kMaxShadowMaps;  // atlas slots (grid = ceil(sqrt))
   bool presentToWindow = false;  // presentToneMapped also blits into framebuffer 0
+  // What the cube maps cover: a Hemisphere one (made from vemd's polar map) holds nothing below
+  // the horizon, and the background shows black there (render::sampleBackground).
+  MapLayout environmentCoverage = MapLayout::Sphere;
   // The region tables the ShadingLights were built on (borrowed during create() only);
   // nullptr: render::makeLightingGeometry(), the defaults buildShadingLights callers use.
   const render::LightingGeometry* geometry = nullptr;

@@ -32,4 +32,9 @@ glm::vec3 sampleCubeMap(const CubeMap& cube, glm::vec3 dir, int level) {
   return glm::mix(top, bottom, fv);
 }
 
+glm::vec3 sampleBackground(const CubeMap& cube, MapLayout coverage, glm::vec3 dir) {
+  if (coverage == MapLayout::Hemisphere && dir.y < 0.0F) return glm::vec3(0.0F);
+  return sampleCubeMap(cube, dir, 0);
+}
+
 }  // namespace vem::render

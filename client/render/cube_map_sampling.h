@@ -8,10 +8,18 @@
 #include <glm/vec3.hpp>
 
 #include "core/cube_map.h"
+#include "core/env_map.h"
 
 namespace vem::render {
 
 // dir non-zero (need not be unit); level clamped to the chain.
 [[nodiscard]] glm::vec3 sampleCubeMap(const CubeMap& cube, glm::vec3 dir, int level = 0);
+
+// The background along a primary ray: level 0 along dir, except below the horizon (dir.y < 0) of a
+// cube made from a Hemisphere map (vemd's stream), which holds nothing there: black. Without that
+// cut, linear filtering blends the sky texels just above the horizon half a texel below it (0.45
+// degrees at 128 px), a grey band at the top of vemview's default view, whose upper edge is the
+// horizon. The GL background shader (client/gl/shaders/background.frag.glsl) does the same.
+[[nodiscard]] glm::vec3 sampleBackground(const CubeMap& cube, MapLayout coverage, glm::vec3 dir);
 
 }  // namespace vem::render

@@ -19,8 +19,10 @@ double msSince(std::chrono::steady_clock::time_point start) {
 class EmbreeFrameRenderer final : public FrameRenderer {
  public:
   EmbreeFrameRenderer(const ViewerOptions& options, embree::EmbreeScene scene,
-                      const render::LightingGeometry& geometry)
-      : options_(options), scene_(std::move(scene)), geometry_(geometry) {}
+                      const render::LightingGeometry& geometry, MapLayout cubeCoverage)
+      : options_(options), scene_(std::move(scene)), geometry_(geometry) {
+    lightOptions_.cubeCoverage = cubeCoverage;
+  }
 
   std::string name() const override {
     return options_.renderer == RendererKind::Reference
@@ -44,7 +46,7 @@ class EmbreeFrameRenderer final : public FrameRenderer {
       frame.timing["converged"] = result.converged;
     } else {
       frame.image = embree::renderWithLights(scene_, camera, options_.widthPx, options_.heightPx,
-                                             lights, geometry_, input.cube.get());
+                                             lights, geometry_, input.cube.get(), lightOptions_);
     }
     frame.renderMs = msSince(start);
     return frame;
@@ -54,18 +56,20 @@ class EmbreeFrameRenderer final : public FrameRenderer {
   const ViewerOptions& options_;
   embree::EmbreeScene scene_;
   const render::LightingGeometry& geometry_;
+  embree::LightRenderOptions lightOptions_;
 };
 
 }  // namespace
 
 std::expected<std::unique_ptr<FrameRenderer>, std::string> makeEmbreeFrameRenderer(
-    const ViewerOptions& options, const scene::Scene& scene,
+    const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
     const render::LightingGeometry& geometry) {
   auto built = embree::EmbreeScene::build(scene);
   if (!built) {
     return std::unexpected(built.error());
   }
-  return std::make_unique<EmbreeFrameRenderer>(options, std::move(*built), geometry);
+  return std::make_unique<EmbreeFrameRenderer>(options, std::move(*built), geometry,
+                                               plan.cubeMapCoverage);
 }
 
 }  // namespace vem::view

@@ -11,7 +11,7 @@
 namespace vem::view {
 
 [[nodiscard]] std::expected<std::unique_ptr<FrameRenderer>, std::string> makeEmbreeFrameRenderer(
-    const ViewerOptions& options, const scene::Scene& scene,
+    const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
     const render::LightingGeometry& geometry);
 
 }  // namespace vem::view

@@ -11,7 +11,7 @@ std::expected<std::unique_ptr<FrameRenderer>, std::string> makeFrameRenderer(
   if (options.renderer == RendererKind::Gl) {
     return makeGlFrameRenderer(options, plan, scene, geometry);
   }
-  return makeEmbreeFrameRenderer(options, scene, geometry);
+  return makeEmbreeFrameRenderer(options, plan, scene, geometry);
 }
 
 }  // namespace vem::view

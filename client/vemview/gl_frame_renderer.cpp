@@ -128,6 +128,7 @@ std::expected<std::unique_ptr<FrameRenderer>, std::string> makeGlFrameRenderer(
   glOptions.shadowMapPx = plan.shadowMapPx;
   glOptions.maxShadowMaps = std::max<std::size_t>(plan.lighting.shadowedCount, 1);
   glOptions.presentToWindow = !options.headless;
+  glOptions.environmentCoverage = plan.cubeMapCoverage;
   glOptions.geometry = &geometry;
   auto renderer = gl::GlRenderer::create(scene, glOptions);
   if (!renderer) {

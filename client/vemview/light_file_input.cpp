@@ -54,7 +54,26 @@ std::expected<Light, std::string> lightOf(const nlohmann::json& value) {
   return light;
 }
 
-std::expected<LightSet, std::string> lightSetOf(const std::string& line) {
+// One line's lights, and how many lights they stand for when they are clusters (vemtool's and
+// vemd's "clustered_from"; else the sum of the clusters' "members"; 0 when not clustered).
+struct FileFrame {
+  LightSet set;
+  std::size_t clusteredFrom = 0;
+};
+
+std::size_t clusteredFromOf(const nlohmann::json& value) {
+  if (value.contains("clustered_from") && value["clustered_from"].is_number_unsigned()) {
+    return value["clustered_from"].get<std::size_t>();
+  }
+  std::size_t members = 0;
+  for (const auto& entry : value["lights"]) {
+    if (entry.contains("members") && entry["members"].is_array())
+      members += entry["members"].size();
+  }
+  return members;
+}
+
+std::expected<FileFrame, std::string> lightSetOf(const std::string& line) {
   const nlohmann::json value = nlohmann::json::parse(line, nullptr, false);
   if (value.is_discarded() || !value.is_object()) {
     return std::unexpected("not a JSON object");
@@ -72,18 +91,19 @@ std::expected<LightSet, std::string> lightSetOf(const std::string& line) {
     set.lights.push_back(*light);
   }
   set.black = set.luminanceSr <= 0.0;
-  return set;
+  return FileFrame{std::move(set), clusteredFromOf(value)};
 }
 
 class LightFileInput final : public LightInput {
  public:
-  LightFileInput(InputFacts facts, std::vector<std::shared_ptr<const LightSet>> frames)
+  LightFileInput(InputFacts facts, std::vector<std::shared_ptr<const FileFrame>> frames)
       : facts_(std::move(facts)), frames_(std::move(frames)) {}
   const InputFacts& facts() const override { return facts_; }
   std::optional<InputFrame> next(std::chrono::milliseconds /*wait*/) override {
     InputFrame frame;
     frame.seq = next_ + 1;
-    frame.lights = frames_[next_];
+    frame.lights = std::shared_ptr<const LightSet>(frames_[next_], &frames_[next_]->set);
+    frame.clusteredFrom = frames_[next_]->clusteredFrom;
     if (next_ + 1 < frames_.size()) {
       ++next_;
     }
@@ -92,7 +112,7 @@ class LightFileInput final : public LightInput {
 
  private:
   InputFacts facts_;
-  std::vector<std::shared_ptr<const LightSet>> frames_;
+  std::vector<std::shared_ptr<const FileFrame>> frames_;
   std::size_t next_ = 0;
 };
 
@@ -104,7 +124,7 @@ std::expected<std::unique_ptr<LightInput>, std::string> openLightFileInput(
   if (!file) {
     return std::unexpected(fmt::format("{}: cannot open the light file", path));
   }
-  std::vector<std::shared_ptr<const LightSet>> frames;
+  std::vector<std::shared_ptr<const FileFrame>> frames;
   bool clustered = false;
   std::string line;
   for (std::size_t number = 1; std::getline(file, line) && frames.size() < kMaxLines; ++number) {
@@ -118,18 +138,19 @@ std::expected<std::unique_ptr<LightInput>, std::string> openLightFileInput(
                       "--jsonl or vemtool lights writes it)",
                       path, number, set.error()));
     }
-    if (set->lights.empty()) {
+    if (set->set.lights.empty()) {
       return std::unexpected(fmt::format("{}: line {}: the frame holds no light", path, number));
     }
     clustered = clustered || line.find("\"members\"") != std::string::npos;
-    frames.push_back(std::make_shared<const LightSet>(std::move(*set)));
+    frames.push_back(std::make_shared<const FileFrame>(std::move(*set)));
   }
   if (frames.empty()) {
     return std::unexpected(fmt::format("{}: the light file holds no frame", path));
   }
   InputFacts facts;
-  facts.description = fmt::format("light file {} ({} frames, {} lights{})", path, frames.size(),
-                                  frames.front()->lights.size(), clustered ? ", clustered" : "");
+  facts.description =
+      fmt::format("light file {} ({} frames, {} lights{})", path, frames.size(),
+                  frames.front()->set.lights.size(), clustered ? ", clustered" : "");
   facts.layout = MapLayout::Hemisphere;
   facts.clustered = clustered;
   facts.cubeMaps = false;

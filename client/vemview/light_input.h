@@ -30,6 +30,7 @@ struct InputFrame {
   std::shared_ptr<const CubeMap> cube;     // null when none
   std::uint64_t cubeVersion = 0;           // changes when the cube map does
   std::shared_ptr<const EnvMap> map;       // the map file's map (reference renderer), else null
+  std::size_t clusteredFrom = 0;  // lights are clusters already: how many lights they stand for
 };
 
 struct InputFacts {

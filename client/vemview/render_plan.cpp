@@ -33,6 +33,7 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
   plan.lighting.clusterBudget = request.inputClustered ? 0 : request.clusterBudget;
   plan.lighting.clusterLayout = request.inputLayout;
   plan.shadowMapPx = request.shadowMapPx;
+  plan.cubeMapCoverage = request.inputLayout;
   plan.targetFrameMs = request.targetFrameMs;
   return plan;
 }

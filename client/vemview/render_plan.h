@@ -49,6 +49,9 @@ struct RenderPlan {
   std::string cubeMapReason;
   std::string shadowReason;
   std::size_t shadowedAskedFor = 0;  // S asked for, when the renderer holds fewer maps; else 0
+  // What the input's cube maps cover (vemd's stream: the upper hemisphere); the renderers show no
+  // background below a hemisphere's horizon.
+  MapLayout cubeMapCoverage = MapLayout::Sphere;
 
   [[nodiscard]] std::string describe() const;  // one line for the start and the status line
 };

@@ -1,54 +1,65 @@
 #include "client/vemview/status_line.h"
 
+#include <cstdio>
+
 #include <fmt/format.h>
 
 namespace vem::view {
+namespace {
 
-void StatusLine::add(bool drawn, double renderMs, const render::ShadingLights& lights) {
-  ++frames_;
-  ++framesSincePrint_;
-  if (drawn) {
-    ++drawn_;
-    renderMsSum_ += renderMs;
-    lastRenderMs_ = renderMs;
+void printToStderr(const std::string& line) { fmt::print(stderr, "vemview: {}\n", line); }
+
+double secondsBetween(StatusLine::Clock::time_point from, StatusLine::Clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
+
+}  // namespace
+
+StatusLine::StatusLine(Clock::time_point start, Print print)
+    : print_(print ? std::move(print) : Print(printToStderr)), start_(start), lastPrint_(start) {}
+
+void StatusLine::showPlan(const RenderPlan& plan) {
+  std::string text = plan.describe();
+  if (text != plan_) {
+    plan_ = std::move(text);
+    print_("plan: " + plan_);
   }
-  lights_ = lights.diffuse.lights.size();
-  shadowed_ = lights.shadowCasters.size();
 }
 
-std::string StatusLine::line() const {
-  return fmt::format(
-      "frame {} | {:.1f} frames/s | drawn {} ({:.1f} ms last) | lights {} | shadowed {}", frames_,
-      fps_, drawn_, lastRenderMs_, lights_, shadowed_);
-}
-
-void StatusLine::maybePrint(const RenderPlan& plan) {
-  const auto now = std::chrono::steady_clock::now();
-  const double seconds = std::chrono::duration<double>(now - lastPrint_).count();
-  if (seconds < 1.0) {
+void StatusLine::add(bool drawn, double renderMs, const LightCounts& counts) {
+  counts_ = counts;
+  if (!drawn) {
+    ++notRedrawn_;
     return;
   }
-  fps_ = double(framesSincePrint_) / seconds;
-  framesSincePrint_ = 0;
+  for (DrawnFrames* d : {&all_, &sinceLastLine_}) {
+    ++d->count;
+    d->renderMsSum += renderMs;
+  }
+}
+
+void StatusLine::maybePrint(Clock::time_point now) {
+  const double seconds = secondsBetween(lastPrint_, now);
+  if (seconds < 1.0 || sinceLastLine_.count == 0) {
+    return;
+  }
+  sinceLastLine_.seconds = seconds;
+  shown_ = statusText(sinceLastLine_, counts_);
+  print_(shown_);
+  sinceLastLine_ = {};
   lastPrint_ = now;
-  shown_ = line();
-  fmt::print(stderr, "vemview: {} | {}\n", shown_, plan.describe());
 }
 
-std::string StatusLine::overlay(const RenderPlan& plan) const {
-  return (shown_.empty() ? line() : shown_) + "\n" + plan.describe();
+std::string StatusLine::overlay() const {
+  return (shown_.empty() ? statusText(sinceLastLine_, counts_) : shown_) + "\n" + plan_;
 }
 
-void StatusLine::printSummary(const RenderPlan& plan, const std::string& lastPicture) const {
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  fmt::print(stderr,
-             "vemview: {} frames in {:.2f} s, {} drawn ({:.1f} ms mean), {} not redrawn (nothing "
-             "changed); lights {}, shadowed {}; plan: {}\n",
-             frames_, seconds, drawn_, drawn_ ? renderMsSum_ / double(drawn_) : 0.0,
-             frames_ - drawn_, lights_, shadowed_, plan.describe());
+void StatusLine::printSummary(Clock::time_point now, const std::string& lastPicture) const {
+  DrawnFrames all = all_;
+  all.seconds = secondsBetween(start_, now);
+  print_(summaryText(all, notRedrawn_, counts_));
   if (!lastPicture.empty()) {
-    fmt::print(stderr, "vemview: last picture {}\n", lastPicture);
+    print_("last picture " + lastPicture);
   }
 }
 

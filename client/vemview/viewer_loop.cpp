@@ -86,8 +86,16 @@ struct Viewer {
   std::optional<FrameState> lastDrawn;
   render::ShadingLights shading;
   RenderedFrame last;
-  StatusLine status;
+  StatusLine status{Clock::now()};  // restarted when the frame loop begins
 };
+
+// How many lights the frame's clusters stand for (0: its lights are not clusters).
+std::size_t clusteredFrom(const Viewer& v, const InputFrame& frame, std::size_t count) {
+  if (v.plan.lighting.clusterBudget > 0) {
+    return std::min(count, frame.lights->lights.size());  // clustered here (--cluster)
+  }
+  return frame.clusteredFrom;  // clustered by vemd (a light file's "clustered_from"), or 0
+}
 
 // One frame: returns false when the run must stop (window closed), an error for a failure.
 std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
@@ -144,14 +152,17 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   record.timing["shadowed"] = v.shading.shadowCasters.size();
   record.timing["shading_lights_ms"] = shadingMs;
   record.timing["render_ms"] = decision.redraw ? v.last.renderMs : 0.0;
-  v.status.add(decision.redraw, v.last.renderMs, v.shading);
-  v.renderer->present(tone, v.status.overlay(v.plan));
+  v.status.add(
+      decision.redraw, v.last.renderMs,
+      lightCountsOf(v.shading, clusteredFrom(v, *frame, count), v.plan.lighting.shadowedCount));
+  v.renderer->present(tone, v.status.overlay());
   if (v.writer) {
     if (auto written = v.writer->write(record, v.last.image, tone); !written) {
       return std::unexpected(written.error());
     }
   }
-  v.status.maybePrint(v.plan);
+  v.status.showPlan(v.plan);
+  v.status.maybePrint(Clock::now());
   if (!decision.redraw && !v.options.headless) {
     std::this_thread::sleep_for(kIdleWait);  // nothing changed: do not spin the window loop
   }
@@ -175,13 +186,6 @@ int runViewer(const ViewerOptions& options) {
     spdlog::error("{}", scene.error());
     return EXIT_FAILURE;
   }
-  if (options.renderer == RendererKind::Reference &&
-      (!options.connectUrl.empty() || !options.lightFile.empty())) {
-    spdlog::error(
-        "--renderer reference integrates an environment map: give it --map FILE, not "
-        "--connect or --lights");
-    return EXIT_FAILURE;
-  }
   const RenderPlan wanted = planFor(*scene, requestFor(options, InputFacts{}));
   auto input = openInput(options, wanted.cubeMap);
   if (!input) {
@@ -201,12 +205,13 @@ int runViewer(const ViewerOptions& options) {
   if (const auto capacity = v.renderer->shadowMapCapacity()) {
     v.plan = withShadowMapCapacity(std::move(v.plan), *capacity);  // what the atlas really holds
   }
-  fmt::print(stderr, "vemview: plan: {}\n", v.plan.describe());
   fmt::print(stderr, "vemview: renderer {}\n", v.renderer->name());
   v.writer = std::move(writer);
   if (v.plan.targetFrameMs) {
     v.adaptive.emplace(*v.plan.targetFrameMs, v.plan.lighting.lightCount, 4, 4096);
   }
+  v.status = StatusLine(Clock::now());  // rates count from here, not from the set-up
+  v.status.showPlan(v.plan);
   for (std::uint64_t i = 0; options.frames == 0 || i < options.frames; ++i) {
     auto going = step(v, i);
     if (!going) {
@@ -217,7 +222,7 @@ int runViewer(const ViewerOptions& options) {
       break;
     }
   }
-  v.status.printSummary(v.plan, v.writer ? v.writer->lastPng().string() : std::string());
+  v.status.printSummary(Clock::now(), v.writer ? v.writer->lastPng().string() : std::string());
   return EXIT_SUCCESS;
 }
 

@@ -1,11 +1,49 @@
 #include "client/vemview/viewer_options.h"
 
+#include <iostream>
 #include <map>
+#include <regex>
 
 #include <CLI/CLI.hpp>
 
+#include "util/cli_conventions.h"
+
 namespace vem::view {
 namespace {
+
+// A word among `names` (any case) for an enum or bool option; in --help the value reads
+// "gl|embree|reference" and a wrong word is one sentence naming the choices (CLI11's own
+// transformer shows its map, "{embree->1,gl->0,reference->2} OR {1,0,2}", in both).
+template <class T>
+CLI::Option* choiceOf(CLI::Option* option, const std::vector<std::pair<std::string, T>>& names) {
+  std::string list;
+  for (const auto& [name, value] : names) list += (list.empty() ? "" : "|") + name;
+  option->type_name(list);
+  return option->transform(CLI::Validator(
+      [names, list](std::string& text) -> std::string {
+        for (const auto& [name, value] : names) {
+          if (CLI::detail::to_lower(text) == name) {
+            text = std::to_string(int(value));
+            return {};
+          }
+        }
+        return "'" + text + "' is not one of " + list;
+      },
+      ""));
+}
+
+// A number > 0, with a plain error (CLI::PositiveNumber names the range up to 1.8e308 in full).
+CLI::Validator positiveNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(text, value) || !(value > 0.0)) {
+          return "'" + text + "' is not a number greater than 0";
+        }
+        return {};
+      },
+      "");
+}
 
 void addInputOptions(CLI::App& app, ViewerOptions& o) {
   auto* connect = app.add_option("--connect", o.connectUrl,
@@ -32,13 +70,15 @@ void addOutputOptions(CLI::App& app, ViewerOptions& o) {
   app.add_option("--out", o.outDir, "Folder for frame-N.png, frame-N.exr and timing.jsonl");
   app.add_flag("!--no-png", o.png, "Do not write PNG frames");
   app.add_flag("!--no-exr", o.exr, "Do not write EXR frames");
-  const std::map<std::string, RendererKind> kinds{{"gl", RendererKind::Gl},
-                                                  {"embree", RendererKind::Embree},
-                                                  {"reference", RendererKind::Reference}};
-  app.add_option("--renderer", o.renderer,
-                 "gl (OpenGL, shadow maps), embree (same lights, ray-traced shadows), reference "
-                 "(Monte Carlo over the whole map; needs --map)")
-      ->transform(CLI::CheckedTransformer(kinds, CLI::ignore_case));
+  choiceOf<RendererKind>(
+      app.add_option(
+          "--renderer", o.renderer,
+          "gl (OpenGL, shadow maps), embree (same lights, ray-traced shadows), reference "
+          "(Monte Carlo over the whole map; needs --map)"),
+      {{"gl", RendererKind::Gl},
+       {"embree", RendererKind::Embree},
+       {"reference", RendererKind::Reference}})
+      ->default_str("gl");
   app.add_option("--width", o.widthPx, "Image width in pixels")
       ->check(CLI::Range(16, 8192))
       ->capture_default_str();
@@ -57,15 +97,14 @@ void addLightingOptions(CLI::App& app, ViewerOptions& o) {
   app.add_option("--shadow-map-px", o.shadowMapPx, "Resolution of one shadow map")
       ->check(CLI::Range(16, 4096))
       ->capture_default_str();
-  app.add_option("--regions", o.regions, "Angular-region light culling (on/off)")
-      ->transform(
-          CLI::CheckedTransformer(std::map<std::string, bool>{{"on", true}, {"off", false}}))
-      ->capture_default_str();
+  choiceOf<bool>(app.add_option("--regions", o.regions, "Angular-region light culling"),
+                 {{"on", true}, {"off", false}})
+      ->default_str(o.regions ? "on" : "off");
   app.add_option("--cluster", o.clusterBudget, "Cluster the lights toward about Q (0: off)")
       ->check(CLI::Range(0, 65536));
   app.add_option("--target-ms", o.targetFrameMs,
                  "Adapt the light count to hold this frame time (ms)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   app.add_flag("--background", o.background, "Show the environment cube map as background");
   app.add_option("--screenshot", o.screenshot,
                  "Window: save what the window shows after the last frame (PNG)");
@@ -86,31 +125,68 @@ void addCameraOptions(CLI::App& app, ViewerOptions& o) {
       ->check(CLI::Range(16, 1 << 20))
       ->capture_default_str();
   app.add_option("--timeout", o.streamTimeoutSec, "Seconds to wait for the stream's first frame")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveNumber())
       ->capture_default_str();
+}
+
+// CLI11 names a value after its parser and its checks ("TEXT", "INT:INT in [16 - 8192]",
+// "FLOAT:POSITIVE"); --help shows what the value is ("URL", "DEGREES") and, for a range, the
+// range ("16..8192"). Choice lists are left to util/cli_conventions.h ("gl|embree|reference").
+void plainValueNames(CLI::App& app) {
+  static const std::map<std::string, std::string> kNames{
+      {"--connect", "URL"},   {"--token", "TOKEN"},     {"--lights", "FILE"},
+      {"--map", "FILE"},      {"--scene", "NAME|FILE"}, {"--frames", "N"},
+      {"--out", "DIR"},       {"--screenshot", "FILE"}, {"--target-ms", "MS"},
+      {"--orbit", "DEGREES"}, {"--azimuth", "DEGREES"}, {"--timeout", "SECONDS"}};
+  static const std::regex kRange{R"(^\S+ in \[(\S+) - (\S+)\]$)"};
+  for (CLI::Option* option : app.get_options()) {
+    if (const auto named = kNames.find(option->get_name()); named != kNames.end()) {
+      option->type_name(named->second);
+    }
+    for (int i = 0;; ++i) {
+      CLI::Validator* check = nullptr;
+      try {
+        check = option->get_validator(i);
+      } catch (const CLI::OptionNotFound&) {
+        break;
+      }
+      const std::string description = check->get_description();
+      std::smatch range;
+      if (std::regex_match(description, range, kRange)) {
+        option->type_name(range[1].str() + ".." + range[2].str());
+        check->description("");
+      } else if (description == "POSITIVE") {
+        check->description("");  // the option's text says what it is
+      }
+    }
+  }
 }
 
 }  // namespace
 
 std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
   CLI::App app{"vemview: draws a scene lit by vemd's lights, with shadows from many lights"};
-  app.footer(
-      "Examples:\n"
-      "  vemview --map ../shared/data/hdri/park.exr                       # a window\n"
-      "  vemview --headless --lights out/lights.jsonl --frames 1 --out out/render\n"
-      "  vemview --connect ws://127.0.0.1:8765 --scene model.gltf --count 512 --shadowed 128");
-  app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return "vemview: error: " + std::string(e.what()) + " (see 'vemview --help')\n";
-  });
   ViewerOptions o;
   addInputOptions(app, o);
   addOutputOptions(app, o);
   addLightingOptions(app, o);
   addCameraOptions(app, o);
+  plainValueNames(app);
+  cli::applyConventions(app, "vemview");  // plain help, the exit statuses, one error line
+  app.footer(  // after the exit statuses the conventions' footer callback prints
+      "Examples:\n"
+      "  vemview --map ../shared/data/hdri/park.exr                       # a window\n"
+      "  vemview --headless --lights out/lights.jsonl --frames 1 --out out/render\n"
+      "  vemview --connect ws://127.0.0.1:8765 --scene model.gltf --count 512 --shadowed 128");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return std::unexpected(app.exit(e));
+    return std::unexpected(cli::exitStatusFor(app, e));
+  }
+  if (o.renderer == RendererKind::Reference && (!o.connectUrl.empty() || !o.lightFile.empty())) {
+    std::cerr << "vemview: error: --renderer reference integrates an environment map: give it "
+                 "--map FILE, not --connect or --lights (see 'vemview --help')\n";
+    return std::unexpected(cli::kExitUsage);
   }
   if (o.headless && o.frames == 0) {
     o.frames = 1;

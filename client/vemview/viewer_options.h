@@ -47,7 +47,8 @@ struct ViewerOptions {
   double streamTimeoutSec = 10.0;
 };
 
-// The options, or the exit code CLI11 chose (0 for --help) with its message already printed.
+// The options, or the exit status (util/cli_conventions.h: 0 after --help, 2 for a usage error)
+// with its message already printed.
 [[nodiscard]] std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv);
 
 }  // namespace vem::view

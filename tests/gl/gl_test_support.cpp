@@ -109,13 +109,14 @@ std::vector<Light> spreadLights(int count, glm::vec3 total) {
 }
 
 std::unique_ptr<GlRenderer> makeRenderer(const scene::Scene& scene, int widthPx, int heightPx,
-                                         int shadowMapPx) {
+                                         int shadowMapPx, MapLayout environmentCoverage) {
   if (headlessContext() == nullptr) return nullptr;
   GlRendererOptions options;
   options.widthPx = widthPx;
   options.heightPx = heightPx;
   options.shadowMapPx = shadowMapPx;
   options.geometry = &testGeometry();
+  options.environmentCoverage = environmentCoverage;
   auto renderer = GlRenderer::create(scene, options);
   if (!renderer) {
     std::fprintf(stderr, "GlRenderer::create: %s\n", renderer.error().c_str());

@@ -42,7 +42,8 @@ render::ShadingLights withGlossy(render::ShadingLights lights, std::size_t highC
 std::vector<Light> spreadLights(int count, glm::vec3 total);
 
 std::unique_ptr<GlRenderer> makeRenderer(const scene::Scene& scene, int widthPx, int heightPx,
-                                         int shadowMapPx = 256);
+                                         int shadowMapPx = 256,
+                                         MapLayout environmentCoverage = MapLayout::Sphere);
 
 struct SphereHit {
   glm::vec3 pointWorld;

@@ -1,10 +1,14 @@
 // The display pass and the background: the tone-mapping shader must equal render::toneMappedSrgb8
 // of the linear image (catches a different luminance, white point, sRGB curve or a flipped
 // read-back), and the background must show each cube-map face where the view looks at it
-// (catches a wrong face order, a mirrored face or an inverted view reconstruction).
+// (catches a wrong face order, a mirrored face or an inverted view reconstruction), and nothing
+// below the horizon of a hemisphere's cube map (catches the grey strip at the top of vemview's
+// default view of vemd's stream).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <numbers>
 
 #include "client/render/tone_mapping.h"
 #include "gl_test_support.h"
@@ -91,6 +95,53 @@ TEST(Background, IsUploadedOnlyWhenTheVersionChanges) {
   EXPECT_TRUE(renderer->render(camera, plainLights({}), &cube, 1).backgroundUploaded);
   EXPECT_FALSE(renderer->render(camera, plainLights({}), &cube, 1).backgroundUploaded);
   EXPECT_TRUE(renderer->render(camera, plainLights({}), &cube, 2).backgroundUploaded);
+}
+
+// vemd streams the cube map of its hemisphere polar map (core/cube_map.h: black below the
+// horizon). vemview's default view (elevation 20 degrees, vertical field 0.7 rad) puts the horizon
+// at the top edge, so every row below it must look like the rows under it: black. Linear filtering
+// used to blend the first sky texels half a texel (0.45 degrees) below the horizon: a grey band
+// over the top 3 rows at 240 px, 6 at 480.
+TEST(Background, HemisphereCubeMapLeavesNoGreyStripAtTheTopOfTheDefaultView) {
+  constexpr int kW = 320;
+  constexpr int kH = 240;
+  const scene::Scene s = sphereOverPlane();
+  auto renderer = makeRenderer(s, kW, kH, 256, MapLayout::Hemisphere);
+  ASSERT_NE(renderer, nullptr);
+  const CubeMap cube =
+      cubeMapFromEnvMap(EnvMap::filled(MapLayout::Hemisphere, 256, 64, glm::vec3(1.0F)), 128, 8);
+  constexpr float kDeg = std::numbers::pi_v<float> / 180.0F;
+  const scene::OrbitCamera camera = scene::viewingCamera(s, 35.0F * kDeg, 20.0F * kDeg);
+  renderer->render(camera, plainLights({}), &cube, 1);
+  const render::LinearImage image = renderer->readLinear();
+  // Mean luminance of each row's background pixels whose ray points below the horizon.
+  std::vector<double> rowMean;
+  for (int y = 0; y < 24; ++y) {
+    double sum = 0.0;
+    int count = 0;
+    for (int x = 0; x < kW; ++x) {
+      const bool covered = image.covered[std::size_t(y * kW + x)] != 0;
+      if (covered || camera.primaryRay(float(x) + 0.5F, float(y) + 0.5F, kW, kH).dirWorld.y >= 0) {
+        continue;
+      }
+      sum += double(image.at(x, y).g);  // a white sky: r = g = b
+      ++count;
+    }
+    if (count > kW / 2) rowMean.push_back(sum / count);
+  }
+  ASSERT_GE(rowMean.size(), 20U) << "the view's top rows look below the horizon";
+  double below = 0.0;
+  for (std::size_t y = 6; y < rowMean.size(); ++y) below += rowMean[y];
+  below /= double(rowMean.size() - 6);
+  for (std::size_t y = 0; y < 6; ++y) {
+    EXPECT_NEAR(rowMean[y], below, 1e-3) << "row " << y << " is a band unlike the rows below";
+  }
+  // The cube is there: looking level, a quarter of the way down is sky.
+  const scene::OrbitCamera level = scene::viewingCamera(s, 35.0F * kDeg, 0.0F);
+  renderer->render(level, plainLights({}), &cube, 1);
+  const render::LinearImage sky = renderer->readLinear();
+  EXPECT_EQ(sky.covered[std::size_t((kH / 4) * kW + 4)], 0);
+  EXPECT_NEAR(sky.at(4, kH / 4).g, 1.0F, 0.05F);
 }
 
 }  // namespace

@@ -52,5 +52,18 @@ TEST(CubeMapSampling, TexelCentresReturnTheTexelItselfNotANeighbour) {
   }
 }
 
+// The Embree renderer's background of vemd's stream (a hemisphere's cube map): just below the
+// horizon it is black, as the map holds nothing there, not the sky that linear filtering blends
+// half a texel (0.45 degrees at 128 px) below it: the grey strip atop vemview's default view.
+TEST(CubeMapSampling, HemisphereBackgroundLeavesNoGreyStripBelowTheHorizon) {
+  const CubeMap cube =
+      cubeMapFromEnvMap(EnvMap::filled(MapLayout::Hemisphere, 256, 64, glm::vec3(1.0F)), 128, 1);
+  const glm::vec3 justBelow(1.0F, -0.003F, 0.0F);  // 0.17 degrees below the horizon
+  EXPECT_GT(sampleCubeMap(cube, justBelow).g, 0.1F) << "the filter blends sky below the horizon";
+  EXPECT_EQ(sampleBackground(cube, MapLayout::Hemisphere, justBelow), glm::vec3(0.0F));
+  EXPECT_EQ(sampleBackground(cube, MapLayout::Sphere, justBelow), sampleCubeMap(cube, justBelow));
+  EXPECT_NEAR(sampleBackground(cube, MapLayout::Hemisphere, {1.0F, 0.2F, 0.0F}).g, 1.0F, 1e-5F);
+}
+
 }  // namespace
 }  // namespace vem::render

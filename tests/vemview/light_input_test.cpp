@@ -45,6 +45,24 @@ TEST(LightFileInput, ClusteredFramesFromVemdAreMarkedClustered) {
   EXPECT_TRUE((*input)->facts().clustered);
 }
 
+// The status named the clusters as lights ("lights 11"): a frame says how many lights its
+// clusters stand for ("clustered_from", else the members), for "lights 256 (11 clusters)".
+TEST(LightFileInput, ClusteredFrameSaysHowManyLightsItsClustersStandForSoTheStatusNamesBoth) {
+  const auto path = writeFile(
+      "clustered_counts.jsonl",
+      R"({"frame":0,"count":1,"lights":[{"id":0,"dir":[0,1,0],"rgb":[1,1,1],"members":[0,1]}],"clustered_from":2})"
+      "\n"
+      R"({"frame":1,"count":2,"lights":[{"id":0,"dir":[0,1,0],"rgb":[1,1,1],"members":[0,1,2]},{"id":1,"dir":[1,0,0],"rgb":[1,1,1],"members":[3]}]})"
+      "\n"
+      R"({"frame":2,"count":1,"lights":[{"id":0,"dir":[0,1,0],"rgb":[1,1,1]}]})"
+      "\n");
+  auto input = openLightFileInput(path.string());
+  ASSERT_TRUE(input.has_value()) << input.error();
+  EXPECT_EQ((*input)->next(std::chrono::milliseconds(0))->clusteredFrom, 2U);
+  EXPECT_EQ((*input)->next(std::chrono::milliseconds(0))->clusteredFrom, 4U);
+  EXPECT_EQ((*input)->next(std::chrono::milliseconds(0))->clusteredFrom, 0U);
+}
+
 TEST(LightFileInput, BadLineIsRefusedNamingTheFileTheLineAndTheField) {
   const auto path =
       writeFile("bad.jsonl", R"({"frame":0,"lights":[{"id":0,"dir":[0,1,0],"rgb":[1,1,1]}]})"

@@ -31,6 +31,17 @@ TEST(RenderPlan, LambertianSceneHasNoGlossyPassAndNoCubeMap) {
   EXPECT_NE(plan.describe().find("no cube map"), std::string::npos);
 }
 
+// The renderers cut the background at a hemisphere's horizon (no grey strip atop the view of
+// vemd's stream); a map file of the whole sphere keeps its lower half.
+TEST(RenderPlan, CubeMapCoverageFollowsTheInputsMapSoNoGreyStripBelowTheHorizon) {
+  PlanRequest request;
+  request.inputLayout = MapLayout::Hemisphere;
+  EXPECT_EQ(planFor(sphereOnPlane(glossyMaterial()), request).cubeMapCoverage,
+            MapLayout::Hemisphere);
+  request.inputLayout = MapLayout::Sphere;
+  EXPECT_EQ(planFor(sphereOnPlane(glossyMaterial()), request).cubeMapCoverage, MapLayout::Sphere);
+}
+
 TEST(RenderPlan, GlossyMaterialTurnsOnTheLHPassAndTheCubeMap) {
   const RenderPlan plan = planFor(sphereOnPlane(glossyMaterial()), PlanRequest{});
   EXPECT_TRUE(plan.glossyPass);

@@ -40,10 +40,11 @@ class VemviewCli : public vem::testing::VemviewProcessTest {
   void write(const std::string& name, const std::string& text) const {
     std::ofstream(dir_ / name) << text;
   }
-  // Exit non-zero with one line that names `part`.
-  void expectRefused(const std::string& args, const std::string& part) const {
+  // Exit `status` (util/cli_conventions.h: 1 a failure at run time, such as a bad file; 2 a usage
+  // error) with one line that names `part`.
+  void expectRefused(const std::string& args, const std::string& part, int status = 1) const {
     const CommandRun r = run(args);
-    EXPECT_NE(r.exitCode, 0) << args;
+    EXPECT_EQ(r.exitCode, status) << args << "\n" << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_TRUE(r.err.starts_with("vemview: error: ")) << r.err;
     EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
@@ -119,6 +120,7 @@ TEST_F(VemviewCli, LoneConvexObjectRendersWithoutShadowMaps) {
 
 // Maps of 4096 px: the atlas (at most GL_MAX_TEXTURE_SIZE square) holds fewer than the 32 asked
 // for, and vemview warned so, then reported 32 shadowed lights in its plan, status and timing log.
+// The status names the maps drawn of the maps planned: "shadow maps 16 of 16".
 TEST_F(VemviewCli, ShadowedCountIsWhatTheAtlasHoldsNotWhatWasAskedFor) {
   const CommandRun r =
       run(" --headless --width 64 --height 48 --count 32 --shadowed 32 "
@@ -136,8 +138,8 @@ TEST_F(VemviewCli, ShadowedCountIsWhatTheAtlasHoldsNotWhatWasAskedFor) {
   const std::string plan =
       "plan: lights 32, shadow maps " + n + " at 4096 px (32 asked for; the atlas holds " + n + ")";
   EXPECT_NE(r.err.find(plan), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("lights 32, shadowed " + n + ";"), std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find("shadowed 32"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("lights 32 | shadow maps " + n + " of " + n), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("shadow maps 32"), std::string::npos) << r.err;
   const auto timing = jsonLines(dir_ / "out" / "timing.jsonl");
   ASSERT_EQ(timing.size(), 1U);
   EXPECT_EQ(timing[0]["shadowed"], held);
@@ -286,7 +288,36 @@ TEST_F(VemviewCli, UnknownSceneFormatIsRefused) {
 TEST_F(VemviewCli, ReferenceRendererWithoutAMapIsRefused) {
   write("lights.jsonl", R"({"lights":[{"id":0,"dir":[0,1,0],"rgb":[1,1,1]}]})"
                         "\n");
-  expectRefused(kSmall + "--renderer reference --lights " + path("lights.jsonl"), "--map");
+  expectRefused(kSmall + "--renderer reference --lights " + path("lights.jsonl"), "--map", 2);
+}
+
+// --help showed CLI11's internals: "ENUM:value in {embree->1,gl->0,reference->2} OR {1,0,2}",
+// "--no-png{false}", "INT:INT in [16 - 8192]".
+TEST_F(VemviewCli, HelpShowsNoParserInternalsButTheExitStatusesAndTheExamples) {
+  const CommandRun r = run("--help");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* internal : {"->", "ENUM", "{false}", " OR {", "INT:", "FLOAT:", "TEXT"}) {
+    EXPECT_EQ(r.out.find(internal), std::string::npos) << internal << " in\n" << r.out;
+  }
+  EXPECT_NE(r.out.find("--renderer gl|embree|reference (default: gl)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--regions on|off (default: on)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--width 16..8192 (default: 640)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  --no-png "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Exit status: 0 success, 1 failure at run time, 2 usage error"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("Examples:\n  vemview --map"), std::string::npos) << r.out;
+}
+
+TEST_F(VemviewCli, BadFlagOrValueIsAUsageErrorExitTwo) {
+  expectRefused("--no-such-flag", "--no-such-flag", 2);
+  expectRefused("--renderer vulkan", "'vulkan' is not one of gl|embree|reference", 2);
+  expectRefused("--width 5", "--width", 2);
+  expectRefused("--target-ms -1", "'-1' is not a number greater than 0", 2);
+}
+
+TEST_F(VemviewCli, MissingSceneFileIsARuntimeFailureExitOne) {
+  expectRefused(kSmall + "--scene " + path("nothere.obj"), "nothere.obj", 1);
 }
 
 TEST_F(VemviewCli, BadLightFileIsOneSentenceWithTheLine) {
