@@ -3,8 +3,8 @@
 // ([stream], daemon/stream/stream_setup.h); docs/vemd.md.
 // SIGINT/SIGTERM are caught from before start-up: start-up checks the flag between its steps and
 // the rows of the polar remap (daemon_setup.h), the loop at least every 50 ms.
-// Exit status: 0 after a clean stop (also one asked for during start-up), 1 when start-up failed or
-// a sink failed, 2 for bad usage.
+// Exit status (util/cli_conventions.h): 0 after a clean stop (also one asked for during start-up),
+// 1 when start-up failed or a sink failed, 2 for bad usage (a flag, or the configuration file).
 #include <csignal>
 #include <cstdio>
 #include <iostream>

@@ -15,6 +15,8 @@
 #include <toml++/toml.h>
 #include <CLI/CLI.hpp>
 
+#include "util/cli_conventions.h"
+
 #include "calib/core/raw_frame.h"
 #include "core/default_pattern.h"
 #include "vemd/toml_section_reader.h"
@@ -322,16 +324,20 @@ void addFlags(CLI::App& app, Flags& f) {
   app.add_flag("--list-devices", f.listDevices, "List the cameras every backend sees, and exit");
   app.add_option("--frames", f.frames, "Stop after N frames from the source (0: no limit)")
       ->type_name("N")
+      ->default_str("0")
       ->check(wholeNumberCheck(0, kMaxFrames));
   app.add_option("--rate", f.rate, "The pace of the source: recorded, max or frames per second")
       ->type_name("recorded|max|HZ")
+      ->default_str("recorded")
       ->check(rateCheck());
   app.add_flag("--loop", f.loop, "Replay the recording again and again");
   app.add_option("--lights", f.lights, "Lights per frame, 1 to 65536")
       ->type_name("N")
+      ->default_str("1024")
       ->check(wholeNumberCheck(1, std::int64_t(kMaxLights)));
   app.add_option("--cluster", f.cluster, "Cluster toward about Q lights (0: no clustering)")
       ->type_name("Q")
+      ->default_str("72")
       ->check(wholeNumberCheck(0, kMaxClusterBudget));
   app.add_option("--out", f.out, "Folder for the preview and relative --jsonl/--record paths")
       ->type_name("DIR");
@@ -341,10 +347,12 @@ void addFlags(CLI::App& app, Flags& f) {
       ->type_name("FILE");
   app.add_option("--preview-every", f.previewEvery, "Write preview.png every N frames (0: off)")
       ->type_name("N")
+      ->default_str("0")
       ->check(wholeNumberCheck(0, kMaxEvery));
   app.add_option("--stream-listen", f.streamListen,
-                 "Stream to render clients on IP:PORT (\"\": no server; default 127.0.0.1:8765)")
+                 "Stream to render clients on IP:PORT (\"\": no server; port 0: any)")
       ->type_name("ADDR")
+      ->default_str("127.0.0.1:8765")
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
             if (text.empty() || parseListenAddress(text)) return {};
@@ -355,6 +363,7 @@ void addFlags(CLI::App& app, Flags& f) {
                "Also keep every preview as preview-SEQ.png");
   app.add_option("--stats-every", f.statsEvery, "A statistics line every S seconds (0: at exit)")
       ->type_name("S")
+      ->default_str("5")
       ->check(numberCheck(0.0, kMaxStatsEveryS));
 }
 
@@ -411,8 +420,10 @@ constexpr const char* kFooter =
     "  vemd --source synthetic:sky --jsonl lights.jsonl --record runs/\n"
     "  vemd --source v4l2:/dev/video0 --camera my-camera.toml --preview-every 30\n"
     "  vemd --list-devices\n"
-    "Flags override the configuration file; config/vemd.toml documents every key.\n"
-    "SIGINT and SIGTERM stop vemd cleanly (sinks closed, a recording indexed).";
+    "Flags override the configuration file (defaults above are the built-in ones);\n"
+    "config/vemd.toml documents every key. A configuration file that cannot be read or holds a\n"
+    "bad key is a usage error (exit 2), like a bad flag. SIGINT and SIGTERM stop vemd cleanly\n"
+    "(sinks closed, a recording indexed; exit 0).";
 
 }  // namespace
 
@@ -540,27 +551,30 @@ std::expected<VemdConfig, CommandLineExit> parseCommandLine(const std::vector<st
   app.set_version_flag("--version", "vemd " VEM_VERSION);
   Flags flags;
   addFlags(app, flags);
+  cli::applyConventions(app, "vemd");
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
   try {
     app.parse(int(argv.size()), argv.data());
   } catch (const CLI::ParseError& e) {
     std::ostringstream out, err;
-    const int code = app.exit(e, out, err);  // 0 for --help and --version
-    return std::unexpected(CommandLineExit{code == 0 ? 0 : 2, out.str(), err.str()});
+    const int code = cli::exitStatusFor(app, e, out, err);  // 0 for --help and --version, else 2
+    return std::unexpected(CommandLineExit{code, out.str(), err.str()});
   }
   VemdConfig config;
   if (flags.config) {
     auto loaded = loadConfigFile(*flags.config);
-    if (!loaded) return std::unexpected(CommandLineExit{2, "", loaded.error() + "\n"});
+    if (!loaded) {
+      return std::unexpected(CommandLineExit{cli::kExitUsage, "", loaded.error() + "\n"});
+    }
     config = std::move(*loaded);
   }
   applyFlags(flags, config);
   if (auto problem = streamProblem(config.stream)) {
-    return std::unexpected(CommandLineExit{2, "", *problem + "\n"});
+    return std::unexpected(CommandLineExit{cli::kExitUsage, "", *problem + "\n"});
   }
   if (auto problem = previewProblem(config)) {
-    return std::unexpected(CommandLineExit{2, "", *problem + "\n"});
+    return std::unexpected(CommandLineExit{cli::kExitUsage, "", *problem + "\n"});
   }
   return config;
 }

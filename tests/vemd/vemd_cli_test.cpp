@@ -322,6 +322,37 @@ TEST_F(VemdCli, WhiteSpaceOnlyTokenRefusesToStart) {
                        "at byte 1 of 3\n");
 }
 
+// Catches help that shows CLI11's internals ("->", "ENUM", "{false}") or leaves out the exit
+// statuses, and exit statuses off the tools' conventions (util/cli_conventions.h): 0 for --help,
+// 2 for an unknown flag (one error line naming the help), 1 for a failure at run time.
+TEST_F(VemdCli, HelpIsPlainTextAndExitStatusesFollowTheConventions) {
+  const CommandRun help = run("--help", false);
+  EXPECT_EQ(help.exitCode, 0) << help.err;
+  for (const char* internal : {"->", "ENUM", "{false}", "{true}"}) {
+    EXPECT_EQ(help.out.find(internal), std::string::npos) << internal << " in\n" << help.out;
+  }
+  EXPECT_NE(help.out.find("Exit status: 0 success, 1 failure at run time, 2 usage error"),
+            std::string::npos)
+      << help.out;
+  EXPECT_NE(help.out.find("--lights N (default: 1024)"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("holds a\nbad key is a usage error (exit 2)"), std::string::npos)
+      << help.out;
+
+  const CommandRun badFlag = run("--no-such-flag", false);
+  EXPECT_EQ(badFlag.exitCode, 2) << badFlag.err;
+  EXPECT_NE(badFlag.err.find("vemd: error: "), std::string::npos) << badFlag.err;
+  EXPECT_NE(badFlag.err.find("(see 'vemd --help')\n"), std::string::npos) << badFlag.err;
+
+  const CommandRun missingReplay =
+      run("--stream-listen '' --source replay:" + (dir_ / "missing.vem").string());
+  EXPECT_EQ(missingReplay.exitCode, 1) << missingReplay.err;
+  EXPECT_NE(missingReplay.err.find("missing.vem: no such file"), std::string::npos)
+      << missingReplay.err;
+
+  const CommandRun missingConfig = run("--config " + (dir_ / "missing.toml").string(), false);
+  EXPECT_EQ(missingConfig.exitCode, 2) << missingConfig.err;
+}
+
 TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {
   const CommandRun r = run("--frames 1");
   EXPECT_EQ(r.exitCode, 1);
