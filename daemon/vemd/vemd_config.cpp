@@ -66,7 +66,7 @@ constexpr std::string_view kFilterKeys[] = {"preset"};
 constexpr std::string_view kClusteringKeys[] = {"enabled", "budget", "correction_factor"};
 constexpr std::string_view kOutputKeys[] = {
     "dir",          "jsonl", "record", "record_sync_every", "preview_every", "preview_numbered",
-    "preview_scale"};
+    "preview_scale", "allow_missing"};
 constexpr std::string_view kStatsKeys[] = {"every_s"};
 constexpr std::string_view kStreamKeys[] = {"enabled",
                                             "listen",
@@ -194,6 +194,7 @@ void readOutput(TomlSectionReader r, OutputConfig& o, const ProcessingOptions& p
   r.wholeNumber("preview_every", 0, kMaxEvery, o.previewEvery);
   r.boolean("preview_numbered", o.previewNumbered);
   r.wholeNumber("preview_scale", 1, kMaxPreviewScale, o.previewScale);
+  r.boolean("allow_missing", o.allowMissing);
   if (auto expected = previewScaleExpected(o, p)) {
     r.fail("preview_scale", *expected, std::to_string(o.previewScale));
   }
@@ -310,6 +311,7 @@ struct Flags {
   bool loop = false;
   bool previewNumbered = false;
   bool listDevices = false;
+  bool allowMissingOutputs = false;
 };
 
 void addFlags(CLI::App& app, Flags& f) {
@@ -361,6 +363,9 @@ void addFlags(CLI::App& app, Flags& f) {
           ""));
   app.add_flag("--preview-numbered", f.previewNumbered,
                "Also keep every preview as preview-SEQ.png");
+  app.add_flag("--allow-missing-outputs", f.allowMissingOutputs,
+               "Run on when a configured output (file, recording, preview, stream port) cannot "
+               "open, with a warning; without it vemd stops (exit 1)");
   app.add_option("--stats-every", f.statsEvery, "A statistics line every S seconds (0: at exit)")
       ->type_name("S")
       ->default_str("5")
@@ -386,6 +391,7 @@ void applyFlags(const Flags& f, VemdConfig& c) {
   if (f.previewNumbered) c.output.previewNumbered = true;
   if (f.statsEvery) c.stats.everyS = *f.statsEvery;
   if (f.streamListen) c.stream.listen = *f.streamListen;
+  if (f.allowMissingOutputs) c.output.allowMissing = true;
 }
 
 // --preview-every may turn on a preview too large for the file's map and scale.

@@ -8,7 +8,8 @@
 //   "vemd.toml: processing.lights: expected a whole number from 1 to 65536, found 0".
 // Flags: --config FILE, --source SPEC, --frames N, --rate recorded|max|HZ, --loop, --lights N,
 // --cluster Q (0: off), --out DIR, --record FILE, --jsonl FILE, --preview-every N (0: off),
-// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR; a bad flag value is refused
+// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR, --allow-missing-outputs;
+// a bad flag value is refused
 // the same way ("--lights: expected ...").
 //
 // Units are in the key names: ..._ms milliseconds, ..._s seconds, rate in frames per second.
@@ -50,6 +51,9 @@ struct OutputConfig {
   std::int64_t previewEvery = 0;      // write preview.png every N frames; 0: no preview
   bool previewNumbered = false;       // also keep preview-SEQ.png files
   std::int64_t previewScale = 2;      // preview pixels per polar-map pixel
+  // A configured output (these files, the stream server) that cannot open: false stops vemd
+  // (exit 1), true lets it run without that output, with a warning.
+  bool allowMissing = false;
   friend bool operator==(const OutputConfig&, const OutputConfig&) = default;
 };
 

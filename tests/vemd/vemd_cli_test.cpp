@@ -1,6 +1,7 @@
 // The built `vemd` as a user runs it: a small recording replayed with --frames, the final report,
 // a clean stop on SIGTERM that leaves an indexed recording, and bad usage.
 #include <signal.h>
+#include <netinet/in.h>
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <sys/wait.h>
@@ -32,7 +33,9 @@ class VemdCli : public VemdFiles {
  protected:
   void SetUp() override {
     VemdFiles::SetUp();
-    std::ofstream(smallConfig()) << "[processing]\nmap_width = 256\nmap_height = 64\n";
+    // Streaming on a free port, so that no run depends on 8765 being free.
+    std::ofstream(smallConfig()) << "[processing]\nmap_width = 256\nmap_height = 64\n"
+                                    "[stream]\nlisten = \"127.0.0.1:0\"\n";
   }
   // Small maps keep the runs fast; flags come after it and override.
   fs::path smallConfig() const { return dir_ / "small.toml"; }
@@ -152,7 +155,8 @@ TEST_F(VemdCli, SyntheticSceneFromAConfigFileReportsCaptureToLightsLatency) {
                            "camera = \""
                         << camera.string()
                         << "\"\n[processing]\n"
-                           "map_width = 256\nmap_height = 64\nlights = 64\n";
+                           "map_width = 256\nmap_height = 64\nlights = 64\n"
+                           "[stream]\nlisten = \"127.0.0.1:0\"\n";
   const CommandRun r = run("--config " + config.string(), false);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("5 in, "), std::string::npos) << r.err;
@@ -351,6 +355,82 @@ TEST_F(VemdCli, HelpIsPlainTextAndExitStatusesFollowTheConventions) {
 
   const CommandRun missingConfig = run("--config " + (dir_ / "missing.toml").string(), false);
   EXPECT_EQ(missingConfig.exitCode, 2) << missingConfig.err;
+}
+
+// A TCP socket listening on a free loopback port, taken for as long as it lives.
+class TakenPort {
+ public:
+  TakenPort() {
+    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    if (fd_ < 0 || ::bind(fd_, reinterpret_cast<const sockaddr*>(&address), length) != 0 ||
+        ::listen(fd_, 1) != 0 ||
+        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+      return;
+    }
+    port_ = ntohs(address.sin_port);
+  }
+  ~TakenPort() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  [[nodiscard]] int port() const { return port_; }  // 0: not taken
+
+ private:
+  int fd_ = -1;
+  int port_ = 0;
+};
+
+// Catches vemd exiting 0 with "0 sink(s)" when the stream port is taken (issue 17): a daemon
+// whose configured outputs cannot open looked healthy and served no one. It stops, exit 1, one
+// sentence naming the address and the key that would let it run; with --allow-missing-outputs it
+// runs the frames asked for and warns.
+TEST_F(VemdCli, StreamPortTakenStopsVemdUnlessMissingOutputsAreAllowed) {
+  const TakenPort taken;
+  ASSERT_NE(taken.port(), 0);
+  const std::string address = "127.0.0.1:" + std::to_string(taken.port());
+  const std::string args = "--source synthetic:sky --rate max --frames 2 --lights 16 "
+                           "--stats-every 0 --stream-listen " + address;
+  const CommandRun refused = run(args);
+  EXPECT_EQ(refused.exitCode, 1) << refused.err;
+  EXPECT_NE(refused.err.find("error: stream.listen: cannot listen on " + address + " ("),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("vemd does not run without a configured output unless allowed to "
+                             "(--allow-missing-outputs, or output.allow_missing = true)\n"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_EQ(refused.err.find("running:"), std::string::npos) << refused.err;
+
+  const CommandRun allowed = run(args + " --allow-missing-outputs");
+  EXPECT_EQ(allowed.exitCode, 0) << allowed.err;
+  EXPECT_NE(allowed.err.find("warning: stream.listen: cannot listen on " + address),
+            std::string::npos)
+      << allowed.err;
+  EXPECT_NE(allowed.err.find("vemd runs without this output (output.allow_missing)"),
+            std::string::npos)
+      << allowed.err;
+  EXPECT_NE(allowed.err.find("2 in, 2 processed"), std::string::npos) << allowed.err;
+}
+
+// The same for a file output: a JSON-lines file in a folder that does not exist.
+TEST_F(VemdCli, JsonlFileThatCannotOpenStopsVemdUnlessMissingOutputsAreAllowed) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 2, false);
+  const std::string args = "--source replay:" + path.string() +
+                           " --rate max --lights 16 --stats-every 0 --jsonl " +
+                           (dir_ / "no-such-folder" / "lights.jsonl").string();
+  const CommandRun refused = run(args);
+  EXPECT_EQ(refused.exitCode, 1) << refused.err;
+  EXPECT_NE(refused.err.find("no-such-folder/lights.jsonl"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("(--allow-missing-outputs, or output.allow_missing = true)"),
+            std::string::npos)
+      << refused.err;
+  const CommandRun allowed = run(args + " --allow-missing-outputs");
+  EXPECT_EQ(allowed.exitCode, 0) << allowed.err;
+  EXPECT_NE(allowed.err.find("vemd runs without this output"), std::string::npos) << allowed.err;
 }
 
 TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {
