@@ -69,11 +69,13 @@ class ProcessingLoop {
   }
 
   LoopResult finish(StopReason reason, const QueueCounters& queue, std::uint64_t sourceErrors) {
+    std::vector<std::string> notes = sinks_.notes();  // before the sinks are closed
     for (const DroppedSink& failed : sinks_.closeAll()) {
       spdlog::error("sink {}: {}", failed.name, util::printable(failed.message, 1024));
       ++sinkFailures_;
     }
     LoopResult result{reason, stats_.totals(monotonicNowNs(), queue, sourceErrors), sinkFailures_};
+    result.totals.notes = std::move(notes);
     spdlog::info("{}", formatReport(result.totals, "final"));
     return result;
   }
@@ -123,7 +125,8 @@ class ProcessingLoop {
     if (options_.reportEveryS <= 0.0) return;
     const std::int64_t now = monotonicNowNs();
     if (now < nextReportNs_) return;
-    const LoopReport report = stats_.takeWindow(now, queue, sourceErrors);
+    LoopReport report = stats_.takeWindow(now, queue, sourceErrors);
+    report.notes = sinks_.notes();
     const std::string line = formatReport(report, "stats");
     spdlog::info("{}", line);
     observer_.reported(report, line);

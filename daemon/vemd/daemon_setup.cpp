@@ -165,6 +165,11 @@ std::expected<Daemon, StartupFailure> buildDaemon(const VemdConfig& config,
   for (const std::string& problem : missing) {
     spdlog::warn("{}", util::printable(missingOutputAllowed(problem), 1024));
   }
+  for (const auto& sink : *sinks) {
+    if (std::string note = sink->note(); !note.empty()) {
+      spdlog::info("{}", util::printable(note, 1024));
+    }
+  }
   const auto closeSinks = [&] {
     for (auto& sink : *sinks) (void)sink->close();  // a recording already created keeps its index
   };

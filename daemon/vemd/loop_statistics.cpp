@@ -33,6 +33,7 @@ std::string formatReport(const LoopReport& r, const std::string& label) {
                      s.micros.max);
     }
   }
+  for (const std::string& note : r.notes) fmt::format_to(std::back_inserter(line), "; {}", note);
   return line;
 }
 

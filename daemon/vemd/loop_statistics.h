@@ -44,6 +44,7 @@ struct LoopReport {
   RunningStat endToEndMs;
   RunningStat captureToLightsMs;  // empty unless the source's clock is CLOCK_MONOTONIC
   std::vector<StageStat> stages;  // the pipeline's stages, then "sinks"
+  std::vector<std::string> notes;  // the sinks' (sink.h: "recording to runs/x.vem"), at the end
 
   [[nodiscard]] double framesPerSecond() const {
     return elapsedS > 0.0 ? double(processed) / elapsedS : 0.0;
@@ -52,7 +53,7 @@ struct LoopReport {
 
 // One line: "<label> 5.0 s: 150 in, 150 processed (30.0 frames/s), 0 dropped, 0 bad, 0 source
 // errors; latency end-to-end 3.21 ms mean, 5.10 max[; capture-to-lights ...]; stages us
-// mean/max: calibrate 901/1210, ..., sinks 12/40".
+// mean/max: calibrate 901/1210, ..., sinks 12/40[; recording to runs/x.vem]".
 [[nodiscard]] std::string formatReport(const LoopReport& report, const std::string& label);
 
 class LoopStatistics {

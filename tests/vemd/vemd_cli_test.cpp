@@ -163,6 +163,27 @@ TEST_F(VemdCli, SyntheticSceneFromAConfigFileReportsCaptureToLightsLatency) {
   EXPECT_NE(r.err.find("capture-to-lights "), std::string::npos) << r.err;
 }
 
+// Catches `vemd --record runs/` never saying which file it created (issue 17): the name is logged
+// at start, in every statistics line and in the final one.
+TEST_F(VemdCli, RecordingIntoAFolderNamesTheFileAtStartAndInTheStatistics) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 12, false);
+  const fs::path runs = dir_ / "runs";
+  fs::create_directories(runs);
+  const CommandRun r = run("--source replay:" + path.string() +
+                           " --rate 30 --lights 16 --stats-every 0.1 --record " + runs.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(std::distance(fs::directory_iterator(runs), fs::directory_iterator()), 1);
+  const std::string file = fs::directory_iterator(runs)->path().string();
+  EXPECT_NE(r.err.find("info: recording to " + file + "\n"), std::string::npos) << r.err;
+  const std::size_t final = r.err.find("info: final ");
+  ASSERT_NE(final, std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("; recording to " + file + "\n", final), std::string::npos) << r.err;
+  const std::size_t stats = r.err.find("info: stats ");
+  ASSERT_NE(stats, std::string::npos) << r.err;
+  EXPECT_LT(r.err.find("; recording to " + file + "\n", stats), final) << r.err;
+}
+
 // A paced replay with a report every 0.1 s: the periodic statistics lines come while it runs.
 TEST_F(VemdCli, PrintsAStatisticsLineEveryFewSecondsWhileRunning) {
   const fs::path path = dir_ / "sky.vem";
