@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "stream/stream_setup.h"
+#include "util/log_setup.h"
 #include "util/printable.h"
 #include "vemd/daemon_loop.h"
 #include "vemd/daemon_setup.h"
@@ -43,15 +43,16 @@ void installStopHandlers() {
 
 int main(int argc, char** argv) {
   using namespace vem::vemd;
-  spdlog::set_default_logger(spdlog::stderr_color_mt("vemd"));
-  spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e vemd %^%l%$: %v");
-
   auto config = parseCommandLine(std::vector<std::string>(argv, argv + argc));
   if (!config) {
     std::cout << config.error().out;
     std::cerr << config.error().err;
     return config.error().exitCode;
   }
+  // The configuration checked both names.
+  vem::cli::setUpLogging("vemd", {*vem::cli::parseLogLevel(config->log.level),
+                                  *vem::cli::parseLogFormat(config->log.format),
+                                  vem::cli::underJournald()});
   if (config->listDevices) {
     std::cout << deviceListText();
     return 0;

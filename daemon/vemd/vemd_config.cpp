@@ -19,6 +19,7 @@
 
 #include "calib/core/raw_frame.h"
 #include "core/default_pattern.h"
+#include "vemd/config_toml.h"
 #include "vemd/toml_section_reader.h"
 
 namespace vem::vemd {
@@ -52,7 +53,7 @@ constexpr const char* kRateExpected =
 // The keys of each section, in the order config/vemd.toml documents them.
 constexpr std::string_view kTopKeys[] = {"version",    "source", "camera",     "bracketing",
                                          "processing", "filter", "clustering", "output",
-                                         "stats",      "stream"};
+                                         "stats",      "log",        "stream"};
 constexpr std::string_view kSourceKeys[] = {
     "spec",         "rate",   "loop",       "frames", "queue_depth", "retry_initial_ms",
     "retry_max_ms", "camera", "noise_code", "seed"};
@@ -68,6 +69,9 @@ constexpr std::string_view kOutputKeys[] = {
     "dir",          "jsonl", "record", "record_sync_every", "preview_every", "preview_numbered",
     "preview_scale", "allow_missing"};
 constexpr std::string_view kStatsKeys[] = {"every_s"};
+constexpr std::string_view kLogKeys[] = {"level", "format"};
+const std::vector<std::string_view> kLogLevelNames{"trace", "debug", "info", "warn", "error", "off"};
+const std::vector<std::string_view> kLogFormatNames{"text", "json"};
 constexpr std::string_view kStreamKeys[] = {"enabled",
                                             "listen",
                                             "token",
@@ -205,6 +209,21 @@ void readStats(TomlSectionReader r, StatsConfig& s) {
   r.number("every_s", 0.0, kMaxStatsEveryS, s.everyS);
 }
 
+// A string of `names` into `out`.
+void readName(TomlSectionReader& r, std::string_view key, const std::vector<std::string_view>& names,
+              std::string& out) {
+  std::size_t index = 0;
+  while (index < names.size() && names[index] != out) ++index;
+  r.choice(key, names, index);
+  if (index < names.size()) out = std::string(names[index]);
+}
+
+void readLog(TomlSectionReader r, LogConfig& l) {
+  r.onlyKeys(kLogKeys);
+  readName(r, "level", kLogLevelNames, l.level);
+  readName(r, "format", kLogFormatNames, l.format);
+}
+
 void readStream(TomlSectionReader r, StreamConfig& s) {
   r.onlyKeys(kStreamKeys);
   r.boolean("enabled", s.enabled);
@@ -292,6 +311,16 @@ CLI::Validator numberCheck(double min, double max) {
       "");
 }
 
+// One of `names`.
+CLI::Validator nameCheck(const std::vector<std::string_view>& names) {
+  return CLI::Validator(
+      [&names](std::string& text) -> std::string {
+        if (std::find(names.begin(), names.end(), text) != names.end()) return {};
+        return fmt::format("expected one of {}, found {}", fmt::join(names, "|"), text);
+      },
+      "");
+}
+
 CLI::Validator rateCheck() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
@@ -303,6 +332,7 @@ CLI::Validator rateCheck() {
 
 struct Flags {
   std::optional<std::string> config, source, rate, out, record, jsonl, camera, streamListen;
+  std::optional<std::string> logLevel, logFormat;
   std::optional<std::uint64_t> frames;
   std::optional<std::size_t> lights;
   std::optional<int> cluster;
@@ -312,6 +342,8 @@ struct Flags {
   bool previewNumbered = false;
   bool listDevices = false;
   bool allowMissingOutputs = false;
+  bool quiet = false;
+  bool printConfig = false;
 };
 
 void addFlags(CLI::App& app, Flags& f) {
@@ -366,6 +398,21 @@ void addFlags(CLI::App& app, Flags& f) {
   app.add_flag("--allow-missing-outputs", f.allowMissingOutputs,
                "Run on when a configured output (file, recording, preview, stream port) cannot "
                "open, with a warning; without it vemd stops (exit 1)");
+  auto* logLevel = app.add_option("--log-level", f.logLevel,
+                                  "Log messages of this level and above (off: none)")
+                       ->check(nameCheck(kLogLevelNames))
+                       ->type_name("trace|debug|info|warn|error|off")
+                       ->default_str("info");
+  app.add_flag("--quiet", f.quiet, "Log warnings and errors only (--log-level warn)")
+      ->excludes(logLevel);
+  app.add_option("--log-format", f.logFormat,
+                 "Log lines as text, or as one JSON object each (time, level, logger, message)")
+      ->check(nameCheck(kLogFormatNames))
+      ->type_name("text|json")
+      ->default_str("text");
+  app.add_flag("--print-config", f.printConfig,
+               "Print the configuration in force (file, defaults and flags merged) as TOML, "
+               "and exit");
   app.add_option("--stats-every", f.statsEvery, "A statistics line every S seconds (0: at exit)")
       ->type_name("S")
       ->default_str("5")
@@ -392,6 +439,9 @@ void applyFlags(const Flags& f, VemdConfig& c) {
   if (f.statsEvery) c.stats.everyS = *f.statsEvery;
   if (f.streamListen) c.stream.listen = *f.streamListen;
   if (f.allowMissingOutputs) c.output.allowMissing = true;
+  if (f.logLevel) c.log.level = *f.logLevel;
+  if (f.quiet) c.log.level = "warn";
+  if (f.logFormat) c.log.format = *f.logFormat;
 }
 
 // --preview-every may turn on a preview too large for the file's map and scale.
@@ -499,6 +549,7 @@ const std::vector<ConfigSection>& configSchema() {
                                       {"clustering", list(kClusteringKeys)},
                                       {"output", list(kOutputKeys)},
                                       {"stats", list(kStatsKeys)},
+                                      {"log", list(kLogKeys)},
                                       {"stream", list(kStreamKeys)}};
   }();
   return schema;
@@ -529,6 +580,7 @@ std::expected<VemdConfig, std::string> parseConfig(const std::string& text,
   readOutput({section(document, "output", top), "output", status}, config.output,
              config.processing);
   readStats({section(document, "stats", top), "stats", status}, config.stats);
+  readLog({section(document, "log", top), "log", status}, config.log);
   readStream({section(document, "stream", top), "stream", status}, config.stream);
   if (!status.ok()) return std::unexpected(*status.failure);
   return config;
@@ -582,6 +634,7 @@ std::expected<VemdConfig, CommandLineExit> parseCommandLine(const std::vector<st
   if (auto problem = previewProblem(config)) {
     return std::unexpected(CommandLineExit{cli::kExitUsage, "", *problem + "\n"});
   }
+  if (flags.printConfig) return std::unexpected(CommandLineExit{0, formatConfigToml(config), ""});
   return config;
 }
 
