@@ -454,6 +454,24 @@ TEST_F(VemdCli, JsonlFileThatCannotOpenStopsVemdUnlessMissingOutputsAreAllowed) 
   EXPECT_NE(allowed.err.find("vemd runs without this output"), std::string::npos) << allowed.err;
 }
 
+// Catches libcamera's coloured log lines ("\x1b[1;33m WARN \x1b[1;37mIPAManager ...") leaking into
+// piped output of `vemd --list-devices`: neither stdout nor stderr holds an ESC byte. Run in a
+// network namespace with loopback alone (Aravis's discovery broadcasts), skipped where none can
+// be made.
+TEST_F(VemdCli, ListDevicesPipedHasNoAnsiEscapesFromLibcamera) {
+  const std::string netns =
+      "sh " + (fs::path(VEM_SOURCE_DIR) / "tests" / "support" / "run_in_netns.sh").string();
+  const CommandRun r = runCommand(
+      "env -u LIBCAMERA_LOG_NO_COLOR -u LIBCAMERA_LOG_LEVELS " + netns + " " + VEMD_PATH +
+          " --list-devices",
+      dir_);
+  if (r.exitCode == 77) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("libcamera:"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+}
+
 TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {
   const CommandRun r = run("--frames 1");
   EXPECT_EQ(r.exitCode, 1);
