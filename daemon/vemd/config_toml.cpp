@@ -27,10 +27,10 @@ toml::table sourceTable(const SourceConfig& s) {
 }
 
 toml::table cameraTable(const CameraConfig& c) {
-  return toml::table{{"pixel_format", c.pixelFormat}, {"width_px", c.widthPx},
-                     {"height_px", c.heightPx},       {"exposure_us", c.exposureUs},
-                     {"gain", c.gain},                {"frame_rate_hz", c.frameRateHz},
-                     {"buffers", c.buffers},          {"timeout_ms", c.timeoutMs}};
+  return toml::table{
+      {"pixel_format", c.pixelFormat}, {"width_px", c.widthPx},    {"height_px", c.heightPx},
+      {"exposure_us", c.exposureUs},   {"gain", c.gain},           {"frame_rate_hz", c.frameRateHz},
+      {"buffers", c.buffers},          {"timeout_ms", c.timeoutMs}};
 }
 
 toml::table bracketingTable(const BracketingConfig& b) {
@@ -96,7 +96,8 @@ toml::table configTable(const VemdConfig& c) {
 
 std::string formatConfigToml(const VemdConfig& config) {
   std::ostringstream out;
-  out << "# vemd's configuration in force (vemd --print-config): defaults, file and flags merged.\n";
+  out << "# vemd's configuration in force (vemd --print-config): defaults, file and flags "
+         "merged.\n";
   if (!config.stream.token.empty()) {
     out << "# stream.token is set and not shown (a secret).\n";
   }

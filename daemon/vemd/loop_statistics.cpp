@@ -19,11 +19,13 @@ std::string formatReport(const LoopReport& r, const std::string& label) {
       label, r.elapsedS, r.framesIn, r.processed, r.framesPerSecond(), r.dropped, r.badFrames,
       r.sourceErrors);
   if (r.arrivalToSinksDoneMs.count > 0) {
-    fmt::format_to(std::back_inserter(line), "; latency from arrival to sinks done {:.2f} ms mean, {:.2f} max",
+    fmt::format_to(std::back_inserter(line),
+                   "; latency from arrival to sinks done {:.2f} ms mean, {:.2f} max",
                    r.arrivalToSinksDoneMs.mean(), r.arrivalToSinksDoneMs.max);
   }
   if (r.captureToSinksDoneMs.count > 0) {
-    fmt::format_to(std::back_inserter(line), "; from capture to sinks done {:.2f} ms mean, {:.2f} max",
+    fmt::format_to(std::back_inserter(line),
+                   "; from capture to sinks done {:.2f} ms mean, {:.2f} max",
                    r.captureToSinksDoneMs.mean(), r.captureToSinksDoneMs.max);
   }
   if (!r.stages.empty() && r.processed > 0) {

@@ -45,8 +45,8 @@ struct LoopReport {
   std::uint64_t sourceErrors = 0;
   RunningStat arrivalToSinksDoneMs;
   RunningStat captureToSinksDoneMs;  // empty unless the source's clock is CLOCK_MONOTONIC
-  std::vector<StageStat> stages;  // the pipeline's stages, then "sinks"
-  std::vector<std::string> notes;  // the sinks' (sink.h: "recording to runs/x.vem"), at the end
+  std::vector<StageStat> stages;     // the pipeline's stages, then "sinks"
+  std::vector<std::string> notes;    // the sinks' (sink.h: "recording to runs/x.vem"), at the end
 
   [[nodiscard]] double framesPerSecond() const {
     return elapsedS > 0.0 ? double(processed) / elapsedS : 0.0;

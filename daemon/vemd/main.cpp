@@ -50,9 +50,9 @@ int main(int argc, char** argv) {
     return config.error().exitCode;
   }
   // The configuration checked both names.
-  vem::cli::setUpLogging("vemd", {*vem::cli::parseLogLevel(config->log.level),
-                                  *vem::cli::parseLogFormat(config->log.format),
-                                  vem::cli::underJournald()});
+  vem::cli::setUpLogging(
+      "vemd", {*vem::cli::parseLogLevel(config->log.level),
+               *vem::cli::parseLogFormat(config->log.format), vem::cli::underJournald()});
   if (config->listDevices) {
     std::cout << deviceListText();
     return 0;

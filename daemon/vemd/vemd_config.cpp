@@ -53,7 +53,7 @@ constexpr const char* kRateExpected =
 // The keys of each section, in the order config/vemd.toml documents them.
 constexpr std::string_view kTopKeys[] = {"version",    "source", "camera",     "bracketing",
                                          "processing", "filter", "clustering", "output",
-                                         "stats",      "log",        "stream"};
+                                         "stats",      "log",    "stream"};
 constexpr std::string_view kSourceKeys[] = {
     "spec",         "rate",   "loop",       "frames", "queue_depth", "retry_initial_ms",
     "retry_max_ms", "camera", "noise_code", "seed"};
@@ -65,12 +65,14 @@ constexpr std::string_view kBracketingKeys[] = {"count", "stops", "base_exposure
 constexpr std::string_view kProcessingKeys[] = {"map_width", "map_height", "lights", "sampler"};
 constexpr std::string_view kFilterKeys[] = {"preset"};
 constexpr std::string_view kClusteringKeys[] = {"enabled", "budget", "correction_factor"};
-constexpr std::string_view kOutputKeys[] = {
-    "dir",          "jsonl", "record", "record_sync_every", "preview_every", "preview_numbered",
-    "preview_scale", "allow_missing"};
+constexpr std::string_view kOutputKeys[] = {"dir",           "jsonl",
+                                            "record",        "record_sync_every",
+                                            "preview_every", "preview_numbered",
+                                            "preview_scale", "allow_missing"};
 constexpr std::string_view kStatsKeys[] = {"every_s"};
 constexpr std::string_view kLogKeys[] = {"level", "format"};
-const std::vector<std::string_view> kLogLevelNames{"trace", "debug", "info", "warn", "error", "off"};
+const std::vector<std::string_view> kLogLevelNames{"trace", "debug", "info",
+                                                   "warn",  "error", "off"};
 const std::vector<std::string_view> kLogFormatNames{"text", "json"};
 constexpr std::string_view kStreamKeys[] = {"enabled",
                                             "listen",
@@ -210,8 +212,8 @@ void readStats(TomlSectionReader r, StatsConfig& s) {
 }
 
 // A string of `names` into `out`.
-void readName(TomlSectionReader& r, std::string_view key, const std::vector<std::string_view>& names,
-              std::string& out) {
+void readName(TomlSectionReader& r, std::string_view key,
+              const std::vector<std::string_view>& names, std::string& out) {
   std::size_t index = 0;
   while (index < names.size() && names[index] != out) ++index;
   r.choice(key, names, index);
@@ -398,11 +400,11 @@ void addFlags(CLI::App& app, Flags& f) {
   app.add_flag("--allow-missing-outputs", f.allowMissingOutputs,
                "Run on when a configured output (file, recording, preview, stream port) cannot "
                "open, with a warning; without it vemd stops (exit 1)");
-  auto* logLevel = app.add_option("--log-level", f.logLevel,
-                                  "Log messages of this level and above (off: none)")
-                       ->check(nameCheck(kLogLevelNames))
-                       ->type_name("trace|debug|info|warn|error|off")
-                       ->default_str("info");
+  auto* logLevel =
+      app.add_option("--log-level", f.logLevel, "Log messages of this level and above (off: none)")
+          ->check(nameCheck(kLogLevelNames))
+          ->type_name("trace|debug|info|warn|error|off")
+          ->default_str("info");
   app.add_flag("--quiet", f.quiet, "Log warnings and errors only (--log-level warn)")
       ->excludes(logLevel);
   app.add_option("--log-format", f.logFormat,

@@ -8,9 +8,9 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <spdlog/logger.h>
 #include <spdlog/sinks/ostream_sink.h>
+#include <nlohmann/json.hpp>
 
 namespace vem::cli {
 namespace {
@@ -32,8 +32,8 @@ std::string logged(const LogOptions& options, spdlog::level::level_enum level,
 // backslash, a control byte and invalid UTF-8 (a camera's text) must stay one valid JSON line.
 TEST(LogSetup, JsonMessageWithQuotesAndNewlineIsOneValidJsonLine) {
   const std::string message = "camera \"left\" said:\nno \\ signal\x01 \xff";
-  const std::string line = logged({spdlog::level::info, LogFormat::Json, false},
-                                  spdlog::level::warn, message);
+  const std::string line =
+      logged({spdlog::level::info, LogFormat::Json, false}, spdlog::level::warn, message);
   ASSERT_FALSE(line.empty());
   EXPECT_EQ(line.back(), '\n');
   EXPECT_EQ(line.find('\n'), line.size() - 1) << line;

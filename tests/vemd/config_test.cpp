@@ -357,9 +357,9 @@ TEST_F(VemdConfigFiles, PrintConfigShowsTheFlagOverTheFileAndParsesBackToTheSame
                          "[filter]\npreset = \"none\"\n[clustering]\ncorrection_factor = 1.9\n"
                          "[output]\njsonl = \"l.jsonl\"\n[stats]\nevery_s = 2.5\n"
                          "[log]\nformat = \"json\"\n[stream]\nlisten = \"[::1]:0\"\n";
-  const std::vector<std::string> flags{"vemd",    "--config", file.string(), "--lights",
-                                       "64",      "--quiet",  "--allow-missing-outputs",
-                                       "--rate", "max"};
+  const std::vector<std::string> flags{
+      "vemd",   "--config", file.string(), "--lights", "64", "--quiet", "--allow-missing-outputs",
+      "--rate", "max"};
   auto running = vemd::parseCommandLine(flags);
   ASSERT_TRUE(running) << running.error().err;
   std::vector<std::string> printing = flags;

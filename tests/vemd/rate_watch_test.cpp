@@ -25,7 +25,8 @@ class FakeSource {
     for (std::int64_t i = 0; i < steps; ++i) {
       nowNs_ += kPollNs;
       produced_ += hz * double(kPollNs) * 1e-9;
-      if (auto change = watch_.observe(nowNs_, std::uint64_t(produced_))) changes.push_back(*change);
+      if (auto change = watch_.observe(nowNs_, std::uint64_t(produced_)))
+        changes.push_back(*change);
     }
     return changes;
   }

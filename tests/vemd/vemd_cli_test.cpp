@@ -1,7 +1,7 @@
 // The built `vemd` as a user runs it: a small recording replayed with --frames, the final report,
 // a clean stop on SIGTERM that leaves an indexed recording, and bad usage.
-#include <signal.h>
 #include <netinet/in.h>
+#include <signal.h>
 #include <sys/socket.h>
 #include <sys/un.h>
 #include <sys/wait.h>
@@ -412,8 +412,10 @@ TEST_F(VemdCli, StreamPortTakenStopsVemdUnlessMissingOutputsAreAllowed) {
   const TakenPort taken;
   ASSERT_NE(taken.port(), 0);
   const std::string address = "127.0.0.1:" + std::to_string(taken.port());
-  const std::string args = "--source synthetic:sky --rate max --frames 2 --lights 16 "
-                           "--stats-every 0 --stream-listen " + address;
+  const std::string args =
+      "--source synthetic:sky --rate max --frames 2 --lights 16 "
+      "--stats-every 0 --stream-listen " +
+      address;
   const CommandRun refused = run(args);
   EXPECT_EQ(refused.exitCode, 1) << refused.err;
   EXPECT_NE(refused.err.find("error: stream.listen: cannot listen on " + address + " ("),
@@ -461,10 +463,9 @@ TEST_F(VemdCli, JsonlFileThatCannotOpenStopsVemdUnlessMissingOutputsAreAllowed) 
 TEST_F(VemdCli, ListDevicesPipedHasNoAnsiEscapesFromLibcamera) {
   const std::string netns =
       "sh " + (fs::path(VEM_SOURCE_DIR) / "tests" / "support" / "run_in_netns.sh").string();
-  const CommandRun r = runCommand(
-      "env -u LIBCAMERA_LOG_NO_COLOR -u LIBCAMERA_LOG_LEVELS " + netns + " " + VEMD_PATH +
-          " --list-devices",
-      dir_);
+  const CommandRun r = runCommand("env -u LIBCAMERA_LOG_NO_COLOR -u LIBCAMERA_LOG_LEVELS " + netns +
+                                      " " + VEMD_PATH + " --list-devices",
+                                  dir_);
   if (r.exitCode == 77) GTEST_SKIP() << r.err;
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("libcamera:"), std::string::npos) << r.out;

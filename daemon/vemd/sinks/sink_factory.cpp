@@ -43,8 +43,9 @@ std::expected<std::vector<std::unique_ptr<Sink>>, std::string> makeSinks(
   if (config.record) {
     recording::WriterOptions options;
     options.syncEveryFrames = config.recordSyncEveryFrames;
-    auto added = add(sinks, RecorderSink::create(recordingPathFor(*config.record, unixNowNs()),
-                                                 recordingContext, options),
+    auto added = add(sinks,
+                     RecorderSink::create(recordingPathFor(*config.record, unixNowNs()),
+                                          recordingContext, options),
                      missing);
     if (!added) return std::unexpected(std::move(added.error()));
   }

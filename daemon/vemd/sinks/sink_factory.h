@@ -27,7 +27,7 @@ struct SinkConfig {
   int previewEvery = 30;                            // one preview per this many frames
   bool previewNumbered = false;                     // also keep preview-SEQ.png files
   int previewScale = 2;                             // preview pixels per polar-map pixel
-  std::uint32_t recordSyncEveryFrames = 30;  // recording::WriterOptions::syncEveryFrames
+  std::uint32_t recordSyncEveryFrames = 30;         // recording::WriterOptions::syncEveryFrames
 };
 
 // The configured sinks (none when nothing is configured), or the first failure as one sentence
