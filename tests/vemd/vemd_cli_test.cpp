@@ -20,6 +20,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "recording/recording_reader.h"
 #include "stream_e2e/vemd_process.h"
@@ -471,6 +472,32 @@ TEST_F(VemdCli, ListDevicesPipedHasNoAnsiEscapesFromLibcamera) {
   EXPECT_NE(r.out.find("libcamera:"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << r.out;
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+}
+
+// --log-format json: every line vemd logs is one JSON object (time, level, logger, message), also
+// the error naming a file whose name holds a quote; --quiet leaves warnings and errors only.
+TEST_F(VemdCli, JsonLogFormatGivesOneJsonObjectPerLineAndQuietKeepsErrors) {
+  const fs::path missing = dir_ / "say \"no\".vem";
+  const std::string args =
+      "--stream-listen '' --source 'replay:" + missing.string() + "' --log-format json";
+  const CommandRun r = run(args);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  std::istringstream lines(r.err);
+  std::vector<nlohmann::json> logged;
+  for (std::string line; std::getline(lines, line);) {
+    ASSERT_TRUE(nlohmann::json::accept(line)) << line;
+    logged.push_back(nlohmann::json::parse(line));
+  }
+  ASSERT_GE(logged.size(), 2u) << r.err;
+  EXPECT_EQ(logged.front().at("level"), "info");
+  EXPECT_EQ(logged.back().at("level"), "error");
+  EXPECT_EQ(logged.back().at("logger"), "vemd");
+  EXPECT_EQ(logged.back().at("message"), missing.string() + ": no such file");
+
+  const CommandRun quiet = run(args + " --quiet");
+  EXPECT_EQ(quiet.exitCode, 1) << quiet.err;
+  EXPECT_EQ(std::count(quiet.err.begin(), quiet.err.end(), '\n'), 1) << quiet.err;
+  EXPECT_NE(quiet.err.find("\"level\":\"error\""), std::string::npos) << quiet.err;
 }
 
 TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {
