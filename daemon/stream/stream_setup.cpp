@@ -128,7 +128,10 @@ std::expected<Streaming, std::string> startStreaming(
   if (!server) {
     if (tlsAsked && server.error().starts_with("stream.tls"))
       return std::unexpected(server.error());
-    spdlog::error("{}; vemd runs without streaming", server.error());
+    if (!config.output.allowMissing) {
+      return std::unexpected(vemd::missingOutputRefused(server.error()));
+    }
+    spdlog::warn("{}", vemd::missingOutputAllowed(server.error()));
     return streaming;
   }
   streaming.server = std::move(*server);

@@ -5,8 +5,9 @@
 // Refused at start, in one sentence: a token file that cannot be read, is empty, is readable by
 // group or others, or holds a token vemd does not accept (vemd::streamTokenProblem: too short,
 // white space or control bytes inside; the token itself is never quoted); TLS files that do not
-// load. A port that cannot be bound is not fatal: vemd logs
-// it and runs without streaming (degrade, don't die). Disabled ([stream] enabled = false or
+// load. A port that cannot be bound (taken, say) stops vemd too, its sentence naming the address
+// and output.allow_missing; with output.allow_missing = true (--allow-missing-outputs) it is a
+// warning and vemd runs without streaming. Disabled ([stream] enabled = false or
 // listen = ""): nothing is started.
 #pragma once
 
@@ -46,8 +47,8 @@ struct Streaming {
   std::unique_ptr<StreamControl> control;  // null with it
 };
 
-// Starts the server and appends its sinks to `sinks`; an empty Streaming when disabled or when
-// the port cannot be bound (logged).
+// Starts the server and appends its sinks to `sinks`; an empty Streaming when disabled, or when
+// the port cannot be bound and output.allow_missing is set (logged).
 [[nodiscard]] std::expected<Streaming, std::string> startStreaming(
     const vemd::VemdConfig& config, const vemd::SourceDescription& source,
     std::vector<std::unique_ptr<vemd::Sink>>& sinks);

@@ -4,7 +4,7 @@
 // Conventions: seq increases by one per frame the source produced (gaps mean frames lost before
 // vemd saw them); captureTsNs is the capture instant in nanoseconds on the source's clock (the
 // recording's for replay, CLOCK_MONOTONIC for live sources); arrivalNs is when vemd received it
-// (CLOCK_MONOTONIC), for the end-to-end latency.
+// (CLOCK_MONOTONIC), for the latency from arrival.
 #pragma once
 
 #include <cstdint>

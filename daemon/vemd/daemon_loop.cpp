@@ -9,6 +9,7 @@
 #include "util/printable.h"
 #include "vemd/capture_thread.h"
 #include "vemd/frame_queue.h"
+#include "vemd/rate_watch.h"
 
 namespace vem::vemd {
 
@@ -37,7 +38,10 @@ class ProcessingLoop {
         observer_(observer),
         control_(control),
         stats_(monotonicNowNs()),
-        nextReportNs_(monotonicNowNs() + reportPeriodNs()) {}
+        nextReportNs_(monotonicNowNs() + reportPeriodNs()),
+        sourceSpec_(util::printable(source.spec)) {
+    if (source.paced && source.nominalRateHz > 0.0) rateWatch_.emplace(source.nominalRateHz);
+  }
 
   StopReason run(FrameQueue<CapturedFrame>& frames, FrameQueue<CapturedFrame>& spares,
                  const CaptureThread& capture, const std::atomic<bool>& stopRequested) {
@@ -53,6 +57,7 @@ class ProcessingLoop {
       }
       observer_.alive();
       applyControl(frames.counters(), capture);
+      watchRate(frames.counters(), capture);
       reportIfDue(frames.counters(), capture.sourceErrors());
     }
   }
@@ -69,11 +74,13 @@ class ProcessingLoop {
   }
 
   LoopResult finish(StopReason reason, const QueueCounters& queue, std::uint64_t sourceErrors) {
+    std::vector<std::string> notes = sinks_.notes();  // before the sinks are closed
     for (const DroppedSink& failed : sinks_.closeAll()) {
       spdlog::error("sink {}: {}", failed.name, util::printable(failed.message, 1024));
       ++sinkFailures_;
     }
     LoopResult result{reason, stats_.totals(monotonicNowNs(), queue, sourceErrors), sinkFailures_};
+    result.totals.notes = std::move(notes);
     spdlog::info("{}", formatReport(result.totals, "final"));
     return result;
   }
@@ -119,11 +126,33 @@ class ProcessingLoop {
     refusedInARow_ = 0;
   }
 
+  // A paced source below its nominal rate (rate_watch.h), logged once per change of state; a
+  // source that fails is reported as such, and its window starts again when frames flow.
+  void watchRate(const QueueCounters& queue, const CaptureThread& capture) {
+    if (!rateWatch_) return;
+    if (capture.failure()) return rateWatch_->restart();
+    const auto change = rateWatch_->observe(monotonicNowNs(), queue.pushed);
+    if (!change) return;
+    const RateWatchOptions& o = rateWatch_->options();
+    if (change->below) {
+      spdlog::warn(
+          "source {} delivers {:.1f} frames/s over the last {:.0f} s, below {:.0f} % of its "
+          "nominal {:.1f} frames/s: it cannot keep its rate (these frames are never made, so "
+          "they are not counted as dropped; logged again when it is back above {:.0f} %)",
+          sourceSpec_, change->measuredHz, o.windowS, o.belowFraction * 100.0, change->nominalHz,
+          o.recoveredFraction * 100.0);
+    } else {
+      spdlog::info("source {} is back at its rate: {:.1f} frames/s of a nominal {:.1f}",
+                   sourceSpec_, change->measuredHz, change->nominalHz);
+    }
+  }
+
   void reportIfDue(const QueueCounters& queue, std::uint64_t sourceErrors) {
     if (options_.reportEveryS <= 0.0) return;
     const std::int64_t now = monotonicNowNs();
     if (now < nextReportNs_) return;
-    const LoopReport report = stats_.takeWindow(now, queue, sourceErrors);
+    LoopReport report = stats_.takeWindow(now, queue, sourceErrors);
+    report.notes = sinks_.notes();
     const std::string line = formatReport(report, "stats");
     spdlog::info("{}", line);
     observer_.reported(report, line);
@@ -138,6 +167,8 @@ class ProcessingLoop {
   LoopControl* control_;  // may be null
   LoopStatistics stats_;
   std::int64_t nextReportNs_;
+  std::string sourceSpec_;
+  std::optional<RateWatch> rateWatch_;  // paced sources with a nominal rate
   std::uint64_t refusedInARow_ = 0;
   std::uint64_t sinkFailures_ = 0;
   std::uint64_t refusedTotal_ = 0;

@@ -21,6 +21,8 @@
 //   the first frame, after every frame and at least every kPollInterval, never during a frame:
 //   the place where requests from other threads (the stream server's control messages) change
 //   the pipeline and where a status is published.
+// - A paced source with a nominal rate that delivers below 90 % of it over 3 s is warned about
+//   once, and once again when it is back at 97 % (rate_watch.h).
 // - Reports: every reportEveryS seconds (0: never) and at the end, one log line each
 //   (loop_statistics.h).
 #pragma once

@@ -58,6 +58,17 @@ double mebibytes(std::uint64_t bytes) { return double(bytes) / double(1 << 20); 
 
 }  // namespace
 
+std::string missingOutputRefused(std::string_view problem) {
+  return fmt::format(
+      "{}; vemd does not run without a configured output unless allowed to "
+      "(--allow-missing-outputs, or output.allow_missing = true)",
+      problem);
+}
+
+std::string missingOutputAllowed(std::string_view problem) {
+  return fmt::format("{}; vemd runs without this output (output.allow_missing)", problem);
+}
+
 std::uint64_t framesHeld(std::size_t queueDepth) { return 2 * std::uint64_t(queueDepth) + 4; }
 
 std::optional<std::string> frameMemoryProblem(const SourceDescription& source,
@@ -147,8 +158,18 @@ std::expected<Daemon, StartupFailure> buildDaemon(const VemdConfig& config,
   if (auto problem = outputFolderProblem(config.output.dir)) {
     return std::unexpected(failed(*problem));
   }
-  auto sinks = makeSinks(sinkConfig(config.output), recordingContext(description));
-  if (!sinks) return std::unexpected(failed(sinks.error()));
+  std::vector<std::string> missing;
+  auto sinks = makeSinks(sinkConfig(config.output), recordingContext(description),
+                         config.output.allowMissing ? &missing : nullptr);
+  if (!sinks) return std::unexpected(failed(missingOutputRefused(sinks.error())));
+  for (const std::string& problem : missing) {
+    spdlog::warn("{}", util::printable(missingOutputAllowed(problem), 1024));
+  }
+  for (const auto& sink : *sinks) {
+    if (std::string note = sink->note(); !note.empty()) {
+      spdlog::info("{}", util::printable(note, 1024));
+    }
+  }
   const auto closeSinks = [&] {
     for (auto& sink : *sinks) (void)sink->close();  // a recording already created keeps its index
   };

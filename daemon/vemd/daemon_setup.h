@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "vemd/daemon_loop.h"
@@ -53,6 +54,12 @@ struct StartupFailure {
 [[nodiscard]] std::expected<Daemon, StartupFailure> buildDaemon(
     const VemdConfig& config, const ExtraSinks& extraSinks = {},
     const StopCheck& stopRequested = {});
+
+// A configured output (a sink's file, the stream server's port) that cannot open, as one sentence:
+// `problem` and that vemd stops without it (the flag and key that would let it run)...
+[[nodiscard]] std::string missingOutputRefused(std::string_view problem);
+// ...or, with output.allow_missing, that it runs without it (a warning).
+[[nodiscard]] std::string missingOutputAllowed(std::string_view problem);
 
 // The most bytes of frames vemd may hold at once (docs/vemd.md, "Limits").
 inline constexpr std::uint64_t kFrameMemoryBudgetBytes = std::uint64_t(1) << 30;

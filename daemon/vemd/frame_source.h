@@ -50,7 +50,7 @@ struct SourceDescription {
   calib::PixelFormat pixelFormat;
   std::string calibrationToml;  // the camera file in force (calib/io/camera_file.h); may be empty
   double nominalRateHz = 0.0;   // 0 = unknown
-  bool liveClock = false;       // captureTsNs is CLOCK_MONOTONIC (capture-to-lights latency)
+  bool liveClock = false;       // captureTsNs is CLOCK_MONOTONIC (the latency from capture)
   bool paced = true;            // frames come at a pace of their own (false: as fast as asked)
 };
 

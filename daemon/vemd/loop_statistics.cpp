@@ -18,13 +18,15 @@ std::string formatReport(const LoopReport& r, const std::string& label) {
       "{} {:.1f} s: {} in, {} processed ({:.1f} frames/s), {} dropped, {} bad, {} source errors",
       label, r.elapsedS, r.framesIn, r.processed, r.framesPerSecond(), r.dropped, r.badFrames,
       r.sourceErrors);
-  if (r.endToEndMs.count > 0) {
-    fmt::format_to(std::back_inserter(line), "; latency end-to-end {:.2f} ms mean, {:.2f} max",
-                   r.endToEndMs.mean(), r.endToEndMs.max);
+  if (r.arrivalToSinksDoneMs.count > 0) {
+    fmt::format_to(std::back_inserter(line),
+                   "; latency from arrival to sinks done {:.2f} ms mean, {:.2f} max",
+                   r.arrivalToSinksDoneMs.mean(), r.arrivalToSinksDoneMs.max);
   }
-  if (r.captureToLightsMs.count > 0) {
-    fmt::format_to(std::back_inserter(line), ", capture-to-lights {:.2f} ms mean, {:.2f} max",
-                   r.captureToLightsMs.mean(), r.captureToLightsMs.max);
+  if (r.captureToSinksDoneMs.count > 0) {
+    fmt::format_to(std::back_inserter(line),
+                   "; from capture to sinks done {:.2f} ms mean, {:.2f} max",
+                   r.captureToSinksDoneMs.mean(), r.captureToSinksDoneMs.max);
   }
   if (!r.stages.empty() && r.processed > 0) {
     line += "; stages us mean/max:";
@@ -33,6 +35,7 @@ std::string formatReport(const LoopReport& r, const std::string& label) {
                      s.micros.max);
     }
   }
+  for (const std::string& note : r.notes) fmt::format_to(std::back_inserter(line), "; {}", note);
   return line;
 }
 
@@ -49,9 +52,9 @@ void LoopStatistics::add(LoopReport& report, const ProcessedFrame& frame, double
     report.stages[i].micros.add(frame.timings[i].micros);
   }
   report.stages.back().micros.add(sinksMicros);
-  report.endToEndMs.add(double(lightsOutNs - frame.captured->arrivalNs) * 1e-6);
+  report.arrivalToSinksDoneMs.add(double(lightsOutNs - frame.captured->arrivalNs) * 1e-6);
   if (liveClock)
-    report.captureToLightsMs.add(double(lightsOutNs - frame.captured->captureTsNs) * 1e-6);
+    report.captureToSinksDoneMs.add(double(lightsOutNs - frame.captured->captureTsNs) * 1e-6);
 }
 
 void LoopStatistics::frameProcessed(const ProcessedFrame& frame, double sinksMicros,

@@ -3,9 +3,11 @@
 // (refused before processing), source errors; the processing rate; per-stage time; latency.
 //
 // Units and clocks: stage times in microseconds per frame (mean and max over the window);
-// latencies in milliseconds on CLOCK_MONOTONIC: end-to-end = lights out (after the sinks) minus
-// the frame's arrivalNs; capture-to-lights = lights out minus captureTsNs, only for sources whose
-// timestamps are CLOCK_MONOTONIC (live sources). Pure: the caller passes the times in.
+// latencies in milliseconds on CLOCK_MONOTONIC, both up to the moment every sink is done with the
+// frame: "from arrival" starts at the frame's arrivalNs (vemd received it: vemd's own time),
+// "from capture" at its captureTsNs (the camera took it: adds the camera's and the driver's
+// delay), only for sources whose timestamps are CLOCK_MONOTONIC (live sources). Pure: the caller
+// passes the times in.
 #pragma once
 
 #include <cstdint>
@@ -41,9 +43,10 @@ struct LoopReport {
   std::uint64_t dropped = 0;
   std::uint64_t badFrames = 0;
   std::uint64_t sourceErrors = 0;
-  RunningStat endToEndMs;
-  RunningStat captureToLightsMs;  // empty unless the source's clock is CLOCK_MONOTONIC
-  std::vector<StageStat> stages;  // the pipeline's stages, then "sinks"
+  RunningStat arrivalToSinksDoneMs;
+  RunningStat captureToSinksDoneMs;  // empty unless the source's clock is CLOCK_MONOTONIC
+  std::vector<StageStat> stages;     // the pipeline's stages, then "sinks"
+  std::vector<std::string> notes;    // the sinks' (sink.h: "recording to runs/x.vem"), at the end
 
   [[nodiscard]] double framesPerSecond() const {
     return elapsedS > 0.0 ? double(processed) / elapsedS : 0.0;
@@ -51,8 +54,9 @@ struct LoopReport {
 };
 
 // One line: "<label> 5.0 s: 150 in, 150 processed (30.0 frames/s), 0 dropped, 0 bad, 0 source
-// errors; latency end-to-end 3.21 ms mean, 5.10 max[; capture-to-lights ...]; stages us
-// mean/max: calibrate 901/1210, ..., sinks 12/40".
+// errors; latency from arrival to sinks done 3.21 ms mean, 5.10 max[; from capture to sinks done
+// ...]; stages us
+// mean/max: calibrate 901/1210, ..., sinks 12/40[; recording to runs/x.vem]".
 [[nodiscard]] std::string formatReport(const LoopReport& report, const std::string& label);
 
 class LoopStatistics {

@@ -3,18 +3,18 @@
 // ([stream], daemon/stream/stream_setup.h); docs/vemd.md.
 // SIGINT/SIGTERM are caught from before start-up: start-up checks the flag between its steps and
 // the rows of the polar remap (daemon_setup.h), the loop at least every 50 ms.
-// Exit status: 0 after a clean stop (also one asked for during start-up), 1 when start-up failed or
-// a sink failed, 2 for bad usage.
+// Exit status (util/cli_conventions.h): 0 after a clean stop (also one asked for during start-up),
+// 1 when start-up failed or a sink failed, 2 for bad usage (a flag, or the configuration file).
 #include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "stream/stream_setup.h"
+#include "util/log_setup.h"
 #include "util/printable.h"
 #include "vemd/daemon_loop.h"
 #include "vemd/daemon_setup.h"
@@ -43,15 +43,16 @@ void installStopHandlers() {
 
 int main(int argc, char** argv) {
   using namespace vem::vemd;
-  spdlog::set_default_logger(spdlog::stderr_color_mt("vemd"));
-  spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e vemd %^%l%$: %v");
-
   auto config = parseCommandLine(std::vector<std::string>(argv, argv + argc));
   if (!config) {
     std::cout << config.error().out;
     std::cerr << config.error().err;
     return config.error().exitCode;
   }
+  // The configuration checked both names.
+  vem::cli::setUpLogging(
+      "vemd", {*vem::cli::parseLogLevel(config->log.level),
+               *vem::cli::parseLogFormat(config->log.format), vem::cli::underJournald()});
   if (config->listDevices) {
     std::cout << deviceListText();
     return 0;

@@ -22,6 +22,9 @@ class Sink {
  public:
   virtual ~Sink() = default;
   [[nodiscard]] virtual std::string name() const = 0;
+  // A few words for the start-up log and every statistics line, naming what the sink writes
+  // where a user looks for it ("recording to runs/vemd-20261203T101500Z.vem"); empty: nothing.
+  [[nodiscard]] virtual std::string note() const { return {}; }
   // Called once per processed frame, in order.
   [[nodiscard]] virtual std::expected<void, SinkFailure> consume(const ProcessedFrame& frame) = 0;
   // Called once at shutdown: flush, close and index files.

@@ -36,4 +36,12 @@ std::vector<std::string> SinkSet::names() const {
   return out;
 }
 
+std::vector<std::string> SinkSet::notes() const {
+  std::vector<std::string> out;
+  for (const auto& sink : sinks_) {
+    if (std::string note = sink->note(); !note.empty()) out.push_back(std::move(note));
+  }
+  return out;
+}
+
 }  // namespace vem::vemd

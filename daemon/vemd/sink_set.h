@@ -29,6 +29,8 @@ class SinkSet {
 
   [[nodiscard]] std::size_t size() const { return sinks_.size(); }
   [[nodiscard]] std::vector<std::string> names() const;
+  // The sinks' notes (Sink::note), those that have one, in order.
+  [[nodiscard]] std::vector<std::string> notes() const;
 
  private:
   std::vector<std::unique_ptr<Sink>> sinks_;

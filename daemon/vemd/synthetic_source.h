@@ -5,7 +5,7 @@
 // - Pace (SourceRate): "recorded" is the nominal kNominalRateHz, a number of Hz that rate, "max"
 //   no waiting (scene time still advances by 1 / kNominalRateHz per frame).
 // - Timestamps: captureTsNs is CLOCK_MONOTONIC at the frame's due time (the moment it "exposes"),
-//   so the daemon measures capture-to-lights latency; the frame is rendered before it is due.
+//   so the daemon measures the latency from capture; the frame is rendered before it is due.
 //   seq counts from 0. Endless: next() never returns EndOfStream.
 // - The camera: a camera file (or the built-in example camera, config/camera-example.toml); its
 //   text is the calibration the source describes, so the pipeline calibrates with the truth.

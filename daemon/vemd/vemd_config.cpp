@@ -15,8 +15,11 @@
 #include <toml++/toml.h>
 #include <CLI/CLI.hpp>
 
+#include "util/cli_conventions.h"
+
 #include "calib/core/raw_frame.h"
 #include "core/default_pattern.h"
+#include "vemd/config_toml.h"
 #include "vemd/toml_section_reader.h"
 
 namespace vem::vemd {
@@ -50,7 +53,7 @@ constexpr const char* kRateExpected =
 // The keys of each section, in the order config/vemd.toml documents them.
 constexpr std::string_view kTopKeys[] = {"version",    "source", "camera",     "bracketing",
                                          "processing", "filter", "clustering", "output",
-                                         "stats",      "stream"};
+                                         "stats",      "log",    "stream"};
 constexpr std::string_view kSourceKeys[] = {
     "spec",         "rate",   "loop",       "frames", "queue_depth", "retry_initial_ms",
     "retry_max_ms", "camera", "noise_code", "seed"};
@@ -62,10 +65,15 @@ constexpr std::string_view kBracketingKeys[] = {"count", "stops", "base_exposure
 constexpr std::string_view kProcessingKeys[] = {"map_width", "map_height", "lights", "sampler"};
 constexpr std::string_view kFilterKeys[] = {"preset"};
 constexpr std::string_view kClusteringKeys[] = {"enabled", "budget", "correction_factor"};
-constexpr std::string_view kOutputKeys[] = {
-    "dir",          "jsonl", "record", "record_sync_every", "preview_every", "preview_numbered",
-    "preview_scale"};
+constexpr std::string_view kOutputKeys[] = {"dir",           "jsonl",
+                                            "record",        "record_sync_every",
+                                            "preview_every", "preview_numbered",
+                                            "preview_scale", "allow_missing"};
 constexpr std::string_view kStatsKeys[] = {"every_s"};
+constexpr std::string_view kLogKeys[] = {"level", "format"};
+const std::vector<std::string_view> kLogLevelNames{"trace", "debug", "info",
+                                                   "warn",  "error", "off"};
+const std::vector<std::string_view> kLogFormatNames{"text", "json"};
 constexpr std::string_view kStreamKeys[] = {"enabled",
                                             "listen",
                                             "token",
@@ -192,6 +200,7 @@ void readOutput(TomlSectionReader r, OutputConfig& o, const ProcessingOptions& p
   r.wholeNumber("preview_every", 0, kMaxEvery, o.previewEvery);
   r.boolean("preview_numbered", o.previewNumbered);
   r.wholeNumber("preview_scale", 1, kMaxPreviewScale, o.previewScale);
+  r.boolean("allow_missing", o.allowMissing);
   if (auto expected = previewScaleExpected(o, p)) {
     r.fail("preview_scale", *expected, std::to_string(o.previewScale));
   }
@@ -200,6 +209,21 @@ void readOutput(TomlSectionReader r, OutputConfig& o, const ProcessingOptions& p
 void readStats(TomlSectionReader r, StatsConfig& s) {
   r.onlyKeys(kStatsKeys);
   r.number("every_s", 0.0, kMaxStatsEveryS, s.everyS);
+}
+
+// A string of `names` into `out`.
+void readName(TomlSectionReader& r, std::string_view key,
+              const std::vector<std::string_view>& names, std::string& out) {
+  std::size_t index = 0;
+  while (index < names.size() && names[index] != out) ++index;
+  r.choice(key, names, index);
+  if (index < names.size()) out = std::string(names[index]);
+}
+
+void readLog(TomlSectionReader r, LogConfig& l) {
+  r.onlyKeys(kLogKeys);
+  readName(r, "level", kLogLevelNames, l.level);
+  readName(r, "format", kLogFormatNames, l.format);
 }
 
 void readStream(TomlSectionReader r, StreamConfig& s) {
@@ -289,6 +313,16 @@ CLI::Validator numberCheck(double min, double max) {
       "");
 }
 
+// One of `names`.
+CLI::Validator nameCheck(const std::vector<std::string_view>& names) {
+  return CLI::Validator(
+      [&names](std::string& text) -> std::string {
+        if (std::find(names.begin(), names.end(), text) != names.end()) return {};
+        return fmt::format("expected one of {}, found {}", fmt::join(names, "|"), text);
+      },
+      "");
+}
+
 CLI::Validator rateCheck() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
@@ -300,6 +334,7 @@ CLI::Validator rateCheck() {
 
 struct Flags {
   std::optional<std::string> config, source, rate, out, record, jsonl, camera, streamListen;
+  std::optional<std::string> logLevel, logFormat;
   std::optional<std::uint64_t> frames;
   std::optional<std::size_t> lights;
   std::optional<int> cluster;
@@ -308,6 +343,9 @@ struct Flags {
   bool loop = false;
   bool previewNumbered = false;
   bool listDevices = false;
+  bool allowMissingOutputs = false;
+  bool quiet = false;
+  bool printConfig = false;
 };
 
 void addFlags(CLI::App& app, Flags& f) {
@@ -322,16 +360,20 @@ void addFlags(CLI::App& app, Flags& f) {
   app.add_flag("--list-devices", f.listDevices, "List the cameras every backend sees, and exit");
   app.add_option("--frames", f.frames, "Stop after N frames from the source (0: no limit)")
       ->type_name("N")
+      ->default_str("0")
       ->check(wholeNumberCheck(0, kMaxFrames));
   app.add_option("--rate", f.rate, "The pace of the source: recorded, max or frames per second")
       ->type_name("recorded|max|HZ")
+      ->default_str("recorded")
       ->check(rateCheck());
   app.add_flag("--loop", f.loop, "Replay the recording again and again");
   app.add_option("--lights", f.lights, "Lights per frame, 1 to 65536")
       ->type_name("N")
+      ->default_str("1024")
       ->check(wholeNumberCheck(1, std::int64_t(kMaxLights)));
   app.add_option("--cluster", f.cluster, "Cluster toward about Q lights (0: no clustering)")
       ->type_name("Q")
+      ->default_str("72")
       ->check(wholeNumberCheck(0, kMaxClusterBudget));
   app.add_option("--out", f.out, "Folder for the preview and relative --jsonl/--record paths")
       ->type_name("DIR");
@@ -341,10 +383,12 @@ void addFlags(CLI::App& app, Flags& f) {
       ->type_name("FILE");
   app.add_option("--preview-every", f.previewEvery, "Write preview.png every N frames (0: off)")
       ->type_name("N")
+      ->default_str("0")
       ->check(wholeNumberCheck(0, kMaxEvery));
   app.add_option("--stream-listen", f.streamListen,
-                 "Stream to render clients on IP:PORT (\"\": no server; default 127.0.0.1:8765)")
+                 "Stream to render clients on IP:PORT (\"\": no server; port 0: any)")
       ->type_name("ADDR")
+      ->default_str("127.0.0.1:8765")
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
             if (text.empty() || parseListenAddress(text)) return {};
@@ -353,8 +397,27 @@ void addFlags(CLI::App& app, Flags& f) {
           ""));
   app.add_flag("--preview-numbered", f.previewNumbered,
                "Also keep every preview as preview-SEQ.png");
+  app.add_flag("--allow-missing-outputs", f.allowMissingOutputs,
+               "Run on when a configured output (file, recording, preview, stream port) cannot "
+               "open, with a warning; without it vemd stops (exit 1)");
+  auto* logLevel =
+      app.add_option("--log-level", f.logLevel, "Log messages of this level and above (off: none)")
+          ->check(nameCheck(kLogLevelNames))
+          ->type_name("trace|debug|info|warn|error|off")
+          ->default_str("info");
+  app.add_flag("--quiet", f.quiet, "Log warnings and errors only (--log-level warn)")
+      ->excludes(logLevel);
+  app.add_option("--log-format", f.logFormat,
+                 "Log lines as text, or as one JSON object each (time, level, logger, message)")
+      ->check(nameCheck(kLogFormatNames))
+      ->type_name("text|json")
+      ->default_str("text");
+  app.add_flag("--print-config", f.printConfig,
+               "Print the configuration in force (file, defaults and flags merged) as TOML, "
+               "and exit");
   app.add_option("--stats-every", f.statsEvery, "A statistics line every S seconds (0: at exit)")
       ->type_name("S")
+      ->default_str("5")
       ->check(numberCheck(0.0, kMaxStatsEveryS));
 }
 
@@ -377,6 +440,10 @@ void applyFlags(const Flags& f, VemdConfig& c) {
   if (f.previewNumbered) c.output.previewNumbered = true;
   if (f.statsEvery) c.stats.everyS = *f.statsEvery;
   if (f.streamListen) c.stream.listen = *f.streamListen;
+  if (f.allowMissingOutputs) c.output.allowMissing = true;
+  if (f.logLevel) c.log.level = *f.logLevel;
+  if (f.quiet) c.log.level = "warn";
+  if (f.logFormat) c.log.format = *f.logFormat;
 }
 
 // --preview-every may turn on a preview too large for the file's map and scale.
@@ -411,8 +478,10 @@ constexpr const char* kFooter =
     "  vemd --source synthetic:sky --jsonl lights.jsonl --record runs/\n"
     "  vemd --source v4l2:/dev/video0 --camera my-camera.toml --preview-every 30\n"
     "  vemd --list-devices\n"
-    "Flags override the configuration file; config/vemd.toml documents every key.\n"
-    "SIGINT and SIGTERM stop vemd cleanly (sinks closed, a recording indexed).";
+    "Flags override the configuration file (defaults above are the built-in ones);\n"
+    "config/vemd.toml documents every key. A configuration file that cannot be read or holds a\n"
+    "bad key is a usage error (exit 2), like a bad flag. SIGINT and SIGTERM stop vemd cleanly\n"
+    "(sinks closed, a recording indexed; exit 0).";
 
 }  // namespace
 
@@ -482,6 +551,7 @@ const std::vector<ConfigSection>& configSchema() {
                                       {"clustering", list(kClusteringKeys)},
                                       {"output", list(kOutputKeys)},
                                       {"stats", list(kStatsKeys)},
+                                      {"log", list(kLogKeys)},
                                       {"stream", list(kStreamKeys)}};
   }();
   return schema;
@@ -512,6 +582,7 @@ std::expected<VemdConfig, std::string> parseConfig(const std::string& text,
   readOutput({section(document, "output", top), "output", status}, config.output,
              config.processing);
   readStats({section(document, "stats", top), "stats", status}, config.stats);
+  readLog({section(document, "log", top), "log", status}, config.log);
   readStream({section(document, "stream", top), "stream", status}, config.stream);
   if (!status.ok()) return std::unexpected(*status.failure);
   return config;
@@ -540,28 +611,32 @@ std::expected<VemdConfig, CommandLineExit> parseCommandLine(const std::vector<st
   app.set_version_flag("--version", "vemd " VEM_VERSION);
   Flags flags;
   addFlags(app, flags);
+  cli::applyConventions(app, "vemd");
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
   try {
     app.parse(int(argv.size()), argv.data());
   } catch (const CLI::ParseError& e) {
     std::ostringstream out, err;
-    const int code = app.exit(e, out, err);  // 0 for --help and --version
-    return std::unexpected(CommandLineExit{code == 0 ? 0 : 2, out.str(), err.str()});
+    const int code = cli::exitStatusFor(app, e, out, err);  // 0 for --help and --version, else 2
+    return std::unexpected(CommandLineExit{code, out.str(), err.str()});
   }
   VemdConfig config;
   if (flags.config) {
     auto loaded = loadConfigFile(*flags.config);
-    if (!loaded) return std::unexpected(CommandLineExit{2, "", loaded.error() + "\n"});
+    if (!loaded) {
+      return std::unexpected(CommandLineExit{cli::kExitUsage, "", loaded.error() + "\n"});
+    }
     config = std::move(*loaded);
   }
   applyFlags(flags, config);
   if (auto problem = streamProblem(config.stream)) {
-    return std::unexpected(CommandLineExit{2, "", *problem + "\n"});
+    return std::unexpected(CommandLineExit{cli::kExitUsage, "", *problem + "\n"});
   }
   if (auto problem = previewProblem(config)) {
-    return std::unexpected(CommandLineExit{2, "", *problem + "\n"});
+    return std::unexpected(CommandLineExit{cli::kExitUsage, "", *problem + "\n"});
   }
+  if (flags.printConfig) return std::unexpected(CommandLineExit{0, formatConfigToml(config), ""});
   return config;
 }
 

@@ -2,13 +2,15 @@
 // its default) and the command line, which overrides the file.
 //
 // File: TOML, sections [source], [camera], [bracketing], [processing], [filter], [clustering],
-// [output], [stats], [stream]; every
+// [output], [stats], [log], [stream]; every
 // key is optional (the built-in default applies), a key or section that is not listed is refused,
 // and so is a value of the wrong type or out of range, in one sentence:
 //   "vemd.toml: processing.lights: expected a whole number from 1 to 65536, found 0".
 // Flags: --config FILE, --source SPEC, --frames N, --rate recorded|max|HZ, --loop, --lights N,
 // --cluster Q (0: off), --out DIR, --record FILE, --jsonl FILE, --preview-every N (0: off),
-// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR; a bad flag value is refused
+// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR, --allow-missing-outputs,
+// --log-level L, --quiet, --log-format F, --print-config (prints the merged configuration as
+// TOML and exits 0: config_toml.h); a bad flag value is refused
 // the same way ("--lights: expected ...").
 //
 // Units are in the key names: ..._ms milliseconds, ..._s seconds, rate in frames per second.
@@ -50,6 +52,9 @@ struct OutputConfig {
   std::int64_t previewEvery = 0;      // write preview.png every N frames; 0: no preview
   bool previewNumbered = false;       // also keep preview-SEQ.png files
   std::int64_t previewScale = 2;      // preview pixels per polar-map pixel
+  // A configured output (these files, the stream server) that cannot open: false stops vemd
+  // (exit 1), true lets it run without that output, with a warning.
+  bool allowMissing = false;
   friend bool operator==(const OutputConfig&, const OutputConfig&) = default;
 };
 
@@ -74,6 +79,13 @@ struct BracketingConfig {
   double baseExposureUs = 1000.0;  // the shortest exposure
   double matchTolerance = 0.05;    // a frame's reported exposure vs the bracket's, relative
   friend bool operator==(const BracketingConfig&, const BracketingConfig&) = default;
+};
+
+// [log]: what vemd logs and how (util/log_setup.h).
+struct LogConfig {
+  std::string level = "info";   // trace|debug|info|warn|error|off (--log-level; --quiet: warn)
+  std::string format = "text";  // text|json (--log-format)
+  friend bool operator==(const LogConfig&, const LogConfig&) = default;
 };
 
 struct StatsConfig {
@@ -137,6 +149,7 @@ struct VemdConfig {
   ProcessingOptions processing;  // [processing], [filter] and [clustering]
   OutputConfig output;
   StatsConfig stats;
+  LogConfig log;
   StreamConfig stream;
   bool listDevices = false;  // --list-devices (command line only): list the cameras and exit
   friend bool operator==(const VemdConfig&, const VemdConfig&) = default;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
 
+#include "vemd/config_toml.h"
 #include "vemd/source_factory.h"
 #include "vemd/source_rate.h"
 #include "vemd_fixtures.h"
@@ -96,7 +97,7 @@ TEST(VemdConfig, MisspeltSectionIsRefused) {
   EXPECT_EQ(refusal("[proccessing]\nlights = 64\n"),
             "vemd.toml: proccessing: unknown section (expected one of: version, source, camera, "
             "bracketing, "
-            "processing, filter, clustering, output, stats, stream)");
+            "processing, filter, clustering, output, stats, log, stream)");
 }
 
 TEST(VemdConfig, OutOfRangeValueIsRefusedWithExpectedAndFound) {
@@ -345,6 +346,49 @@ TEST(VemdCommandLine, CameraFileAndListDevicesFlagsAreRead) {
   ASSERT_TRUE(config);
   EXPECT_EQ(config->source.camera, "cam.toml");
   EXPECT_TRUE(config->listDevices);
+}
+
+// --print-config: the configuration in force as TOML, exit 0; a flag overrides the file's value,
+// and the text parses back to the very configuration vemd would run with.
+TEST_F(VemdConfigFiles, PrintConfigShowsTheFlagOverTheFileAndParsesBackToTheSameConfig) {
+  const fs::path file = dir_ / "vemd.toml";
+  std::ofstream(file) << "[source]\nspec = \"synthetic:clouds\"\nrate = 29.97\nseed = 7\n"
+                         "[processing]\nlights = 512\nsampler = \"standard\"\n"
+                         "[filter]\npreset = \"none\"\n[clustering]\ncorrection_factor = 1.9\n"
+                         "[output]\njsonl = \"l.jsonl\"\n[stats]\nevery_s = 2.5\n"
+                         "[log]\nformat = \"json\"\n[stream]\nlisten = \"[::1]:0\"\n";
+  const std::vector<std::string> flags{
+      "vemd",   "--config", file.string(), "--lights", "64", "--quiet", "--allow-missing-outputs",
+      "--rate", "max"};
+  auto running = vemd::parseCommandLine(flags);
+  ASSERT_TRUE(running) << running.error().err;
+  std::vector<std::string> printing = flags;
+  printing.push_back("--print-config");
+  auto printed = vemd::parseCommandLine(printing);
+  ASSERT_FALSE(printed);
+  EXPECT_EQ(printed.error().exitCode, 0);
+  EXPECT_EQ(printed.error().err, "");
+  const std::string& text = printed.error().out;
+  EXPECT_NE(text.find("lights = 64\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("lights = 512"), std::string::npos) << text;
+  EXPECT_NE(text.find("level = 'warn'\n"), std::string::npos) << text;
+  auto back = parseConfig(text, "printed");
+  ASSERT_TRUE(back) << back.error() << "\n" << text;
+  EXPECT_EQ(*back, *running) << text;
+  EXPECT_EQ(back->processing.lightCount, 64u);
+  EXPECT_EQ(back->source.spec, "synthetic:clouds");
+}
+
+TEST(VemdConfig, PrintedDefaultsParseBackToTheDefaultsAndTheTokenIsNotShown) {
+  vemd::VemdConfig defaults;
+  auto back = parseConfig(vemd::formatConfigToml(defaults), "printed");
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_EQ(*back, defaults);
+  vemd::VemdConfig secret;
+  secret.stream.token = "0123456789abcdef0123";
+  const std::string text = vemd::formatConfigToml(secret);
+  EXPECT_EQ(text.find("0123456789abcdef0123"), std::string::npos) << text;
+  EXPECT_NE(text.find("# stream.token is set and not shown"), std::string::npos) << text;
 }
 
 TEST(VemdSources, LiveCameraWithoutACameraFileIsRefusedBeforeOpeningIt) {

@@ -112,7 +112,7 @@ TEST(LoopStatistics, WindowReportsOnlyWhatHappenedSinceTheLastReport) {
   EXPECT_EQ(first.framesIn, 5u);
   EXPECT_EQ(first.dropped, 4u);
   EXPECT_EQ(first.sourceErrors, 2u);
-  EXPECT_DOUBLE_EQ(first.endToEndMs.mean(), 2.0);
+  EXPECT_DOUBLE_EQ(first.arrivalToSinksDoneMs.mean(), 2.0);
   EXPECT_DOUBLE_EQ(first.framesPerSecond(), 1.0);
   stats.frameProcessed(timedFrame(a, 300.0), 30.0, 5'000'000, true);
   queue = {7, 2, 4, 0, 2};
@@ -122,7 +122,7 @@ TEST(LoopStatistics, WindowReportsOnlyWhatHappenedSinceTheLastReport) {
   EXPECT_EQ(second.dropped, 0u);
   EXPECT_EQ(second.sourceErrors, 0u);
   EXPECT_DOUBLE_EQ(second.elapsedS, 2.0);
-  EXPECT_DOUBLE_EQ(second.captureToLightsMs.mean(), 5.0);
+  EXPECT_DOUBLE_EQ(second.captureToSinksDoneMs.mean(), 5.0);
   const LoopReport total = stats.totals(3'000'000'000, queue, 2);
   EXPECT_EQ(total.processed, 2u);
   ASSERT_EQ(total.stages.size(), 3u);
@@ -138,8 +138,8 @@ TEST(LoopStatistics, ReportLineNamesCountsRateLatencyAndStages) {
   const LoopReport r = stats.totals(2'000'000'000, {3, 1, 2, 0, 2}, 0);
   EXPECT_EQ(formatReport(r, "stats"),
             "stats 2.0 s: 3 in, 1 processed (0.5 frames/s), 2 dropped, 0 bad, 0 source errors; "
-            "latency end-to-end 3.21 ms mean, 3.21 max, capture-to-lights 3.21 ms mean, 3.21 "
-            "max; stages us mean/max: calibrate 900/900 tables 900/900 sinks 12/12");
+            "latency from arrival to sinks done 3.21 ms mean, 3.21 max; from capture to sinks "
+            "done 3.21 ms mean, 3.21 max; stages us mean/max: calibrate 900/900 tables 900/900 sinks 12/12");
 }
 
 }  // namespace

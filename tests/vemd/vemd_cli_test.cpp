@@ -1,5 +1,6 @@
 // The built `vemd` as a user runs it: a small recording replayed with --frames, the final report,
 // a clean stop on SIGTERM that leaves an indexed recording, and bad usage.
+#include <netinet/in.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/un.h>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "recording/recording_reader.h"
 #include "stream_e2e/vemd_process.h"
@@ -32,7 +34,9 @@ class VemdCli : public VemdFiles {
  protected:
   void SetUp() override {
     VemdFiles::SetUp();
-    std::ofstream(smallConfig()) << "[processing]\nmap_width = 256\nmap_height = 64\n";
+    // Streaming on a free port, so that no run depends on 8765 being free.
+    std::ofstream(smallConfig()) << "[processing]\nmap_width = 256\nmap_height = 64\n"
+                                    "[stream]\nlisten = \"127.0.0.1:0\"\n";
   }
   // Small maps keep the runs fast; flags come after it and override.
   fs::path smallConfig() const { return dir_ / "small.toml"; }
@@ -143,8 +147,8 @@ TEST_F(VemdCli, SigtermStopsCleanlyAndTheRecordingGetsItsIndex) {
 }
 
 // The synthetic source through a configuration file (its camera is a small one), paced at its
-// own rate: a live clock, so the report has the capture-to-lights latency.
-TEST_F(VemdCli, SyntheticSceneFromAConfigFileReportsCaptureToLightsLatency) {
+// own rate: a live clock, so the report has the latency from capture.
+TEST_F(VemdCli, SyntheticSceneFromAConfigFileReportsLatencyFromCapture) {
   const fs::path camera = dir_ / "cam.toml";
   ASSERT_TRUE(calib::io::saveCameraFile(smallCamera(), camera));
   const fs::path config = dir_ / "vemd.toml";
@@ -152,11 +156,33 @@ TEST_F(VemdCli, SyntheticSceneFromAConfigFileReportsCaptureToLightsLatency) {
                            "camera = \""
                         << camera.string()
                         << "\"\n[processing]\n"
-                           "map_width = 256\nmap_height = 64\nlights = 64\n";
+                           "map_width = 256\nmap_height = 64\nlights = 64\n"
+                           "[stream]\nlisten = \"127.0.0.1:0\"\n";
   const CommandRun r = run("--config " + config.string(), false);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("5 in, "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("capture-to-lights "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("; from capture to sinks done "), std::string::npos) << r.err;
+}
+
+// Catches `vemd --record runs/` never saying which file it created (issue 17): the name is logged
+// at start, in every statistics line and in the final one.
+TEST_F(VemdCli, RecordingIntoAFolderNamesTheFileAtStartAndInTheStatistics) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 12, false);
+  const fs::path runs = dir_ / "runs";
+  fs::create_directories(runs);
+  const CommandRun r = run("--source replay:" + path.string() +
+                           " --rate 30 --lights 16 --stats-every 0.1 --record " + runs.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(std::distance(fs::directory_iterator(runs), fs::directory_iterator()), 1);
+  const std::string file = fs::directory_iterator(runs)->path().string();
+  EXPECT_NE(r.err.find("info: recording to " + file + "\n"), std::string::npos) << r.err;
+  const std::size_t final = r.err.find("info: final ");
+  ASSERT_NE(final, std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("; recording to " + file + "\n", final), std::string::npos) << r.err;
+  const std::size_t stats = r.err.find("info: stats ");
+  ASSERT_NE(stats, std::string::npos) << r.err;
+  EXPECT_LT(r.err.find("; recording to " + file + "\n", stats), final) << r.err;
 }
 
 // A paced replay with a report every 0.1 s: the periodic statistics lines come while it runs.
@@ -320,6 +346,158 @@ TEST_F(VemdCli, WhiteSpaceOnlyTokenRefusesToStart) {
                        ": stream.token: expected a token of 16 to 1024 visible ASCII characters "
                        "without white space (`openssl rand -hex 32` makes one), found white space "
                        "at byte 1 of 3\n");
+}
+
+// Catches help that shows CLI11's internals ("->", "ENUM", "{false}") or leaves out the exit
+// statuses, and exit statuses off the tools' conventions (util/cli_conventions.h): 0 for --help,
+// 2 for an unknown flag (one error line naming the help), 1 for a failure at run time.
+TEST_F(VemdCli, HelpIsPlainTextAndExitStatusesFollowTheConventions) {
+  const CommandRun help = run("--help", false);
+  EXPECT_EQ(help.exitCode, 0) << help.err;
+  for (const char* internal : {"->", "ENUM", "{false}", "{true}"}) {
+    EXPECT_EQ(help.out.find(internal), std::string::npos) << internal << " in\n" << help.out;
+  }
+  EXPECT_NE(help.out.find("Exit status: 0 success, 1 failure at run time, 2 usage error"),
+            std::string::npos)
+      << help.out;
+  EXPECT_NE(help.out.find("--lights N (default: 1024)"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("holds a\nbad key is a usage error (exit 2)"), std::string::npos)
+      << help.out;
+
+  const CommandRun badFlag = run("--no-such-flag", false);
+  EXPECT_EQ(badFlag.exitCode, 2) << badFlag.err;
+  EXPECT_NE(badFlag.err.find("vemd: error: "), std::string::npos) << badFlag.err;
+  EXPECT_NE(badFlag.err.find("(see 'vemd --help')\n"), std::string::npos) << badFlag.err;
+
+  const CommandRun missingReplay =
+      run("--stream-listen '' --source replay:" + (dir_ / "missing.vem").string());
+  EXPECT_EQ(missingReplay.exitCode, 1) << missingReplay.err;
+  EXPECT_NE(missingReplay.err.find("missing.vem: no such file"), std::string::npos)
+      << missingReplay.err;
+
+  const CommandRun missingConfig = run("--config " + (dir_ / "missing.toml").string(), false);
+  EXPECT_EQ(missingConfig.exitCode, 2) << missingConfig.err;
+}
+
+// A TCP socket listening on a free loopback port, taken for as long as it lives.
+class TakenPort {
+ public:
+  TakenPort() {
+    fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    if (fd_ < 0 || ::bind(fd_, reinterpret_cast<const sockaddr*>(&address), length) != 0 ||
+        ::listen(fd_, 1) != 0 ||
+        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+      return;
+    }
+    port_ = ntohs(address.sin_port);
+  }
+  ~TakenPort() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  [[nodiscard]] int port() const { return port_; }  // 0: not taken
+
+ private:
+  int fd_ = -1;
+  int port_ = 0;
+};
+
+// Catches vemd exiting 0 with "0 sink(s)" when the stream port is taken (issue 17): a daemon
+// whose configured outputs cannot open looked healthy and served no one. It stops, exit 1, one
+// sentence naming the address and the key that would let it run; with --allow-missing-outputs it
+// runs the frames asked for and warns.
+TEST_F(VemdCli, StreamPortTakenStopsVemdUnlessMissingOutputsAreAllowed) {
+  const TakenPort taken;
+  ASSERT_NE(taken.port(), 0);
+  const std::string address = "127.0.0.1:" + std::to_string(taken.port());
+  const std::string args =
+      "--source synthetic:sky --rate max --frames 2 --lights 16 "
+      "--stats-every 0 --stream-listen " +
+      address;
+  const CommandRun refused = run(args);
+  EXPECT_EQ(refused.exitCode, 1) << refused.err;
+  EXPECT_NE(refused.err.find("error: stream.listen: cannot listen on " + address + " ("),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("vemd does not run without a configured output unless allowed to "
+                             "(--allow-missing-outputs, or output.allow_missing = true)\n"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_EQ(refused.err.find("running:"), std::string::npos) << refused.err;
+
+  const CommandRun allowed = run(args + " --allow-missing-outputs");
+  EXPECT_EQ(allowed.exitCode, 0) << allowed.err;
+  EXPECT_NE(allowed.err.find("warning: stream.listen: cannot listen on " + address),
+            std::string::npos)
+      << allowed.err;
+  EXPECT_NE(allowed.err.find("vemd runs without this output (output.allow_missing)"),
+            std::string::npos)
+      << allowed.err;
+  EXPECT_NE(allowed.err.find("2 in, 2 processed"), std::string::npos) << allowed.err;
+}
+
+// The same for a file output: a JSON-lines file in a folder that does not exist.
+TEST_F(VemdCli, JsonlFileThatCannotOpenStopsVemdUnlessMissingOutputsAreAllowed) {
+  const fs::path path = dir_ / "sky.vem";
+  writeSkyRecording(path, 2, false);
+  const std::string args = "--source replay:" + path.string() +
+                           " --rate max --lights 16 --stats-every 0 --jsonl " +
+                           (dir_ / "no-such-folder" / "lights.jsonl").string();
+  const CommandRun refused = run(args);
+  EXPECT_EQ(refused.exitCode, 1) << refused.err;
+  EXPECT_NE(refused.err.find("no-such-folder/lights.jsonl"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("(--allow-missing-outputs, or output.allow_missing = true)"),
+            std::string::npos)
+      << refused.err;
+  const CommandRun allowed = run(args + " --allow-missing-outputs");
+  EXPECT_EQ(allowed.exitCode, 0) << allowed.err;
+  EXPECT_NE(allowed.err.find("vemd runs without this output"), std::string::npos) << allowed.err;
+}
+
+// Catches libcamera's coloured log lines ("\x1b[1;33m WARN \x1b[1;37mIPAManager ...") leaking into
+// piped output of `vemd --list-devices`: neither stdout nor stderr holds an ESC byte. Run in a
+// network namespace with loopback alone (Aravis's discovery broadcasts), skipped where none can
+// be made.
+TEST_F(VemdCli, ListDevicesPipedHasNoAnsiEscapesFromLibcamera) {
+  const std::string netns =
+      "sh " + (fs::path(VEM_SOURCE_DIR) / "tests" / "support" / "run_in_netns.sh").string();
+  const CommandRun r = runCommand("env -u LIBCAMERA_LOG_NO_COLOR -u LIBCAMERA_LOG_LEVELS " + netns +
+                                      " " + VEMD_PATH + " --list-devices",
+                                  dir_);
+  if (r.exitCode == 77) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("libcamera:"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+}
+
+// --log-format json: every line vemd logs is one JSON object (time, level, logger, message), also
+// the error naming a file whose name holds a quote; --quiet leaves warnings and errors only.
+TEST_F(VemdCli, JsonLogFormatGivesOneJsonObjectPerLineAndQuietKeepsErrors) {
+  const fs::path missing = dir_ / "say \"no\".vem";
+  const std::string args =
+      "--stream-listen '' --source 'replay:" + missing.string() + "' --log-format json";
+  const CommandRun r = run(args);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  std::istringstream lines(r.err);
+  std::vector<nlohmann::json> logged;
+  for (std::string line; std::getline(lines, line);) {
+    ASSERT_TRUE(nlohmann::json::accept(line)) << line;
+    logged.push_back(nlohmann::json::parse(line));
+  }
+  ASSERT_GE(logged.size(), 2u) << r.err;
+  EXPECT_EQ(logged.front().at("level"), "info");
+  EXPECT_EQ(logged.back().at("level"), "error");
+  EXPECT_EQ(logged.back().at("logger"), "vemd");
+  EXPECT_EQ(logged.back().at("message"), missing.string() + ": no such file");
+
+  const CommandRun quiet = run(args + " --quiet");
+  EXPECT_EQ(quiet.exitCode, 1) << quiet.err;
+  EXPECT_EQ(std::count(quiet.err.begin(), quiet.err.end(), '\n'), 1) << quiet.err;
+  EXPECT_NE(quiet.err.find("\"level\":\"error\""), std::string::npos) << quiet.err;
 }
 
 TEST_F(VemdCli, MissingSourceExitsWithOneSentence) {

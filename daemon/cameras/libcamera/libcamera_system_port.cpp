@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
+#include <iostream>
 #include <map>
 #include <mutex>
 
@@ -12,6 +14,7 @@
 #include <libcamera/camera_manager.h>
 #include <libcamera/control_ids.h>
 #include <libcamera/framebuffer_allocator.h>
+#include <libcamera/logging.h>
 #include <libcamera/property_ids.h>
 #include <libcamera/request.h>
 #include <libcamera/stream.h>
@@ -22,12 +25,28 @@ namespace vem::cameras {
 
 namespace {
 
+// libcamera logs on stderr by itself, each line coloured with ANSI escapes by default, also into a
+// pipe or the journal, and says INFO banners ("libcamera v0.0.3") to anyone listing devices. Once,
+// before the first CameraManager (libcamera 0.0.3 reads LIBCAMERA_LOG_LEVELS when its logger is
+// first used, which this is): its warnings and errors only, and colour only on a terminal; a
+// user's own LIBCAMERA_LOG_LEVELS or LIBCAMERA_LOG_NO_COLOR stands.
+void setUpLibcameraLogging() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    ::setenv("LIBCAMERA_LOG_LEVELS", "*:WARN", /*overwrite=*/0);
+    const bool colour =
+        ::isatty(STDERR_FILENO) == 1 && std::getenv("LIBCAMERA_LOG_NO_COLOR") == nullptr;
+    libcamera::logSetStream(&std::cerr, colour);
+  });
+}
+
 // The process's one CameraManager (libcamera aborts on a second), started while any port lives.
 std::expected<std::shared_ptr<libcamera::CameraManager>, std::string> sharedCameraManager() {
   static std::mutex mutex;
   static std::weak_ptr<libcamera::CameraManager> shared;
   std::lock_guard lock(mutex);
   if (auto manager = shared.lock()) return manager;
+  setUpLibcameraLogging();
   // ~CameraManager() stops it.
   auto manager = std::make_shared<libcamera::CameraManager>();
   if (const int rc = manager->start(); rc != 0) {

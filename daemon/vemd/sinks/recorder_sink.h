@@ -33,6 +33,8 @@ class RecorderSink final : public Sink {
       recording::WriterOptions options = {});
 
   [[nodiscard]] std::string name() const override { return "recorder"; }
+  // "recording to PATH" (the file created, also when --record named a folder).
+  [[nodiscard]] std::string note() const override { return "recording to " + path_.string(); }
   [[nodiscard]] std::expected<void, SinkFailure> consume(const ProcessedFrame& frame) override;
   [[nodiscard]] std::expected<void, SinkFailure> close() override;
 

@@ -27,12 +27,14 @@ struct SinkConfig {
   int previewEvery = 30;                            // one preview per this many frames
   bool previewNumbered = false;                     // also keep preview-SEQ.png files
   int previewScale = 2;                             // preview pixels per polar-map pixel
-  std::uint32_t recordSyncEveryFrames = 30;  // recording::WriterOptions::syncEveryFrames
+  std::uint32_t recordSyncEveryFrames = 30;         // recording::WriterOptions::syncEveryFrames
 };
 
 // The configured sinks (none when nothing is configured), or the first failure as one sentence
-// naming the sink, the path and the cause.
+// naming the sink, the path and the cause. With `missing` given, a sink that cannot open is left
+// out instead, and its sentence appended to *missing (vemd's output.allow_missing).
 [[nodiscard]] std::expected<std::vector<std::unique_ptr<Sink>>, std::string> makeSinks(
-    const SinkConfig& config, const RecordingContext& recordingContext);
+    const SinkConfig& config, const RecordingContext& recordingContext,
+    std::vector<std::string>* missing = nullptr);
 
 }  // namespace vem::vemd
