@@ -83,7 +83,12 @@ class PlainFormatter : public CLI::Formatter {
 
 void applyTo(CLI::App& app, const std::shared_ptr<CLI::FormatterBase>& formatter, const std::string& tool) {
   app.formatter(formatter);
-  app.footer([] { return std::string(kExitStatusHelp); });
+  // Last on the page, below the tool's own footer (examples). A subcommand may have copied its
+  // parent's footer when it was made, the line included: it is added once.
+  const std::string footer = app.get_footer();
+  if (footer.find(kExitStatusHelp) == std::string::npos) {
+    app.footer(footer.empty() ? std::string(kExitStatusHelp) : footer + "\n\n" + std::string(kExitStatusHelp));
+  }
   app.failure_message([tool](const CLI::App* failed, const CLI::Error& e) {
     // CLI11 hands over the top app; the subcommands chosen so far say whose help to read.
     std::string command;

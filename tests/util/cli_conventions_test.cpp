@@ -68,9 +68,26 @@ TEST(CliConventions, DefaultsAreSpelledOut) {
   EXPECT_NE(p.out.find("(default: 256)"), std::string::npos) << p.out;
 }
 
+bool endsWithTheExitStatuses(std::string help) {
+  while (!help.empty() && help.back() == '\n') help.pop_back();
+  return help.ends_with(kExitStatusHelp);
+}
+
 TEST(CliConventions, EveryHelpPageEndsWithTheExitStatuses) {
-  EXPECT_NE(run({"--help"}).out.find(kExitStatusHelp), std::string::npos);
-  EXPECT_NE(run({"draw", "--help"}).out.find(kExitStatusHelp), std::string::npos);
+  EXPECT_TRUE(endsWithTheExitStatuses(run({"--help"}).out)) << run({"--help"}).out;
+  EXPECT_TRUE(endsWithTheExitStatuses(run({"draw", "--help"}).out)) << run({"draw", "--help"}).out;
+}
+
+TEST(CliConventions, TheExitStatusesComeAfterTheToolsOwnExamplesAndOnlyOnce) {
+  CLI::App app{"demo"};
+  app.footer("Examples:\n  demo draw");
+  app.add_subcommand("draw", "draws");
+  applyConventions(app, "demo");
+  applyConventions(app, "demo");
+  const std::string help = app.help();
+  EXPECT_LT(help.find("Examples:"), help.find(kExitStatusHelp)) << help;
+  EXPECT_EQ(help.find(kExitStatusHelp), help.rfind(kExitStatusHelp)) << help;
+  EXPECT_TRUE(endsWithTheExitStatuses(help)) << help;
 }
 
 TEST(CliConventions, UnknownFlagIsAUsageErrorExitTwoNotCli11sCode) {
