@@ -124,11 +124,19 @@ TEST_F(RecorderSinkTest, RecordFolderGetsANewTimeStampedFileEachRun) {
     ASSERT_EQ(sinks->size(), 1U);
     ASSERT_TRUE((*sinks)[0]->close());
   }
+
   int recordings = 0;
   for (const auto& entry : fs::directory_iterator(dir_)) {
     recordings += entry.path().extension() == ".vem" ? 1 : 0;
   }
   EXPECT_EQ(recordings, 3);  // the planted one and one per run
+}
+
+TEST_F(RecorderSinkTest, FolderWithATrailingSlashThatDoesNotExistIsMadeNotTakenForAFile) {
+  const std::int64_t now = 1767225600LL * 1'000'000'000LL;  // 2026-01-01T00:00:00Z
+  const auto path = vemd::recordingPathFor(dir_ / "runs" / "", now);
+  EXPECT_EQ(path, dir_ / "runs" / "vemd-20260101T000000Z.vem");
+  EXPECT_TRUE(std::filesystem::is_directory(dir_ / "runs"));
 }
 
 TEST_F(RecorderSinkTest, FactoryBuildsTheConfiguredSinksInOrder) {

@@ -20,6 +20,8 @@ std::int64_t unixNowNs() {
 std::filesystem::path recordingPathFor(const std::filesystem::path& configured,
                                        std::int64_t nowUnixNs) {
   std::error_code error;
+  // "runs/" names a folder whether or not it exists yet: made here, as --out makes its folder.
+  if (!configured.has_filename()) std::filesystem::create_directories(configured, error);
   if (!std::filesystem::is_directory(configured, error)) return configured;
   const std::time_t seconds = std::time_t(nowUnixNs / 1'000'000'000);
   std::tm utc{};
