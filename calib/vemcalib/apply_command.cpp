@@ -80,14 +80,13 @@ void printResult(const ApplyOptions& o, const EnvMap& map, const calib::PolarRem
 
 int runApply(const ApplyOptions& o) {
   const auto calibration = loadCalibrated(o.camera);
-  if (!calibration) return reportFailure(calibration.error(), kExitBadInput);
+  if (!calibration) return reportFailure(calibration.error());
   const auto frame = loadMatchingFrame(o, *calibration);
-  if (!frame) return reportFailure(frame.error(), kExitBadInput);
+  if (!frame) return reportFailure(frame.error());
   const int height =
       o.height.value_or(o.layout == MapLayout::Hemisphere ? o.width / 4 : o.width / 2);
   if (height < 1)
-    return reportFailure(fmt::format("--width {} leaves no rows for the map", o.width),
-                         kExitBadInput);
+    return reportFailure(fmt::format("--width {} leaves no rows for the map", o.width));
   const calib::PolarRemap remap =
       calib::buildPolarRemap(*calibration->lens, calibration->orientation, frame->width,
                              frame->height, o.layout, o.width, height);
@@ -96,10 +95,10 @@ int runApply(const ApplyOptions& o) {
   EnvMap map;
   calib::applyPolarRemap(remap, *frame, lut, map);
   if (auto saved = mapio::saveMap(map, o.out); !saved)
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   if (o.maskOut)
     if (auto saved = saveMask(remap, *o.maskOut); !saved)
-      return reportFailure(saved.error(), kExitRefused);
+      return reportFailure(saved.error());
   printResult(o, map, remap);
   return EXIT_SUCCESS;
 }
@@ -114,8 +113,7 @@ resamples the fisheye image into a polar map (the geometric and orientation sect
 hemisphere map has W columns over the azimuth and H rows from the zenith to the horizon
 (docs/conventions.md). Map pixels the lens does not see are 0 (and 0 in the mask).
 Refuses a camera file without photometric or geometric section, and a frame whose size or
-format differs from the camera's.
-Exit status: 0 written, 1 the map could not be written, 2 an input could not be used.)";
+format differs from the camera's.)";
 
 }  // namespace
 

@@ -127,7 +127,7 @@ int writeCalibration(const FisheyeOptions& o, const FisheyeInputs& in,
   calibration.geometricQuality = fit.quality;
   calibration.geometricQuality.date = utcDateNow();
   if (auto saved = calib::io::saveCameraFile(calibration, o.out); !saved)
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   fmt::print("wrote {}: {}\n", o.out,
              in.existing ? "the geometric section (the rest of the file is kept)"
                          : "a new camera file (model and serial \"unknown\": edit them there)");
@@ -145,21 +145,20 @@ std::string refusalSentence(const calib::FisheyeFitFailure& failure, const Board
 
 int runFisheye(const FisheyeOptions& o) {
   auto inputs = loadInputs(o);
-  if (!inputs) return reportFailure(inputs.error(), kExitBadInput);
+  if (!inputs) return reportFailure(inputs.error());
   const auto views = findBoards(o, *inputs);
-  if (!views) return reportFailure(views.error() + " (nothing was written)", kExitRefused);
+  if (!views) return reportFailure(views.error() + " (nothing was written)");
   if (int(views->frames.size()) < o.minViews)
     return reportFailure(
         fmt::format("{} of the {} images show the {}x{} board; the fit needs at least {} "
                     "(--min-views) (nothing was written)",
                     views->frames.size(), o.images.size(), inputs->board.innerCols,
-                    inputs->board.innerRows, o.minViews),
-        kExitRefused);
+                    inputs->board.innerRows, o.minViews));
   spdlog::info("fitting the lens to {} views", views->frames.size());
   const calib::FisheyeFitOptions fitOptions{o.fovDeg, o.minViews, o.maxRmsPx};
   const auto fit =
       calib::fitFisheyeRefined(views->frames, views->corners, inputs->board, fitOptions);
-  if (!fit) return reportFailure(refusalSentence(fit.error(), *views), kExitRefused);
+  if (!fit) return reportFailure(refusalSentence(fit.error(), *views));
   printFit(*fit, *views, o.maxRmsPx);
   return writeCalibration(o, *inputs, *fit);
 }
@@ -175,8 +174,7 @@ Refuses, in one sentence, writing nothing: fewer views with a board than --min-v
 without the board (unless --skip-missing, which leaves it out with a warning); a fit that does not
 converge; an RMS above --max-rms, overall or in any view; a lens whose r(theta) stops increasing
 before half the --fov (it would fold the image). Otherwise it replaces the geometric section of
-CAMERA_FILE (the rest is kept) or creates the file for the images' sensor.
-Exit status: 0 written, 1 refused (nothing written), 2 an input could not be used.)";
+CAMERA_FILE (the rest is kept) or creates the file for the images' sensor.)";
 
 }  // namespace
 

@@ -159,7 +159,7 @@ int writeCalibration(const PhotometricOptions& o, const PhotometricInputs& in,
   calibration.photometricQuality.date = utcDateNow();
   if (auto saved = calib::io::saveCameraFile(calibration, o.out); !saved) {
     spdlog::error("{}", saved.error().message);
-    return kExitRefused;
+    return cli::kExitFailure;
   }
   fmt::print("wrote {}: {}\n", o.out,
              in.existing ? "the photometric section (the rest of the file is kept)"
@@ -169,9 +169,9 @@ int writeCalibration(const PhotometricOptions& o, const PhotometricInputs& in,
 
 int runPhotometric(const PhotometricOptions& o) {
   const auto inputs = loadInputs(o);
-  if (!inputs) return reportFailure(inputs.error(), kExitBadInput);
+  if (!inputs) return reportFailure(inputs.error());
   const auto options = fitOptionsFor(o, *inputs);
-  if (!options) return reportFailure(options.error(), kExitBadInput);
+  if (!options) return reportFailure(options.error());
   std::vector<calib::PatchMeasurement> measured;
   for (const calib::PatchSpec& patch : inputs->patches)
     measured.push_back(calib::measurePatch(inputs->frames, patch, options->blackLevelCode,
@@ -181,7 +181,7 @@ int runPhotometric(const PhotometricOptions& o) {
   if (!fit) {
     if (!fit.error().patches.empty()) printTable(fit.error().patches, format.channels);
     spdlog::error("{} (nothing was written)", fit.error().message);
-    return kExitRefused;
+    return cli::kExitFailure;
   }
   printTable(fit->patches, format.channels);
   printSummary(*fit, *options, format);
@@ -200,8 +200,7 @@ Prints each patch's known and fitted luminance and its error in percent, then th
 Refuses, in one sentence, writing nothing: fewer than 3 fit patches; a patch saturated or under
 the black level; codes not increasing with luminance; a fit residual above --max-residual or a
 check error above --max-check-error. Otherwise it replaces the photometric section of CAMERA_FILE
-(the rest is kept) or creates the file.
-Exit status: 0 written, 1 refused (nothing written), 2 an input could not be used.)";
+(the rest is kept) or creates the file.)";
 
 }  // namespace
 

@@ -129,7 +129,7 @@ int writeMergedMap(const std::string& path, const calib::MergedBracket& merged) 
     }
   }
   if (auto saved = mapio::saveMap(map, path); !saved) {
-    return reportFailure(saved.error().message + ": nothing was written", kExitRefused);
+    return reportFailure(saved.error().message + ": nothing was written");
   }
   fmt::print("wrote {}: the merged bracket, {} x {} sensor pixels\n", path, merged.width,
              merged.height);
@@ -145,7 +145,7 @@ int writeCalibration(const ResponseOptions& o, std::optional<calib::CameraCalibr
   calibration.photometricQuality = calib::PhotometricQuality{
       consistency.rmsPercent, consistency.maxPercent, 0.0, 0, 0, utcDateNow()};
   if (auto saved = calib::io::saveCameraFile(calibration, o.out); !saved) {
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   }
   fmt::print("wrote {}: {}\n", o.out,
              merging ? "the photometric section (the rest of the file is kept)"
@@ -195,14 +195,14 @@ MergeCheck checkMerge(std::span<const calib::RawFrame> frames,
 
 int runResponse(const ResponseOptions& o) {
   auto inputs = loadInputs(o);
-  if (!inputs) return reportFailure(inputs.error(), kExitBadInput);
+  if (!inputs) return reportFailure(inputs.error());
   calib::ResponseRecoveryOptions options;
   options.blackLevelCode = o.blackLevelCode;
   options.saturationCode = o.saturationCode;
   options.scaleCdM2 = o.scaleCdM2;
   const auto recovered = calib::recoverResponseWithReport(inputs->frames, options);
   if (!recovered) {
-    return reportFailure(recovered.error().message + ": nothing was written", kExitRefused);
+    return reportFailure(recovered.error().message + ": nothing was written");
   }
   printCurve(*recovered, inputs->frames);
   const calib::PhotometricCalibration photometric{recovered->response, o.blackLevelCode,
@@ -235,8 +235,7 @@ black and of saturation) and the exposures' agreement is printed; [photometric.f
 rms and largest disagreement in percent.
 Refuses, in one sentence, writing nothing: fewer than 2 exposures, frames that are not 8-bit or
 differ in size, equal exposures, exposures spanning less than a stop, a curve that falls.
-Otherwise it replaces the photometric section of CAMERA_FILE (the rest is kept) or creates it.
-Exit status: 0 written, 1 refused (nothing written), 2 an input could not be used.)";
+Otherwise it replaces the photometric section of CAMERA_FILE (the rest is kept) or creates it.)";
 
 }  // namespace
 

@@ -16,7 +16,7 @@ namespace {
 
 int runShow(const std::string& path) {
   const auto calibration = calib::io::loadCameraFile(path);
-  if (!calibration) return reportFailure(calibration.error().message, kExitBadInput);
+  if (!calibration) return reportFailure(calibration.error().message);
   printCalibration(std::cout, *calibration, path);
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
 }
@@ -25,8 +25,7 @@ constexpr const char* kFooter = R"(Example:
   vemcalib show config/camera-example.toml
 Prints the camera, its photometric response (model, parameters, the luminance range it reads,
 the fit's residuals and date), its lens (field of view, parameters, the fit's reprojection error
-and date) and its orientation.
-Exit status: 0 the file loads, 2 it does not (one sentence naming the file and the field).)";
+and date) and its orientation.)";
 
 }  // namespace
 

@@ -86,16 +86,15 @@ std::expected<std::vector<std::string>, std::string> writeViews(
 
 int runSimulateBoards(const SimulateBoardsOptions& o) {
   const auto truth = loadTruth(o.camera);
-  if (!truth) return reportFailure(truth.error(), kExitBadInput);
+  if (!truth) return reportFailure(truth.error());
   const auto [cols, rows] = *parseBoardSize(o.board);  // validated by CLI11
   const calib::Checkerboard board{cols, rows, o.squareMm};
   std::error_code error;
   fs::create_directories(o.out, error);
   if (error)
-    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()),
-                         kExitRefused);
+    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()));
   const auto files = writeViews(o, *truth, board);
-  if (!files) return reportFailure(files.error(), kExitRefused);
+  if (!files) return reportFailure(files.error());
   const calib::CameraIdentity& camera = truth->camera;
   fmt::print("wrote {} views of the board ({}): {} to {}, {} x {} {}, read noise {:g} codes\n",
              files->size(), describeBoard(board), files->front(), files->back(),

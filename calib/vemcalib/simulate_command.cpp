@@ -134,20 +134,19 @@ std::expected<std::vector<std::string>, std::string> writeChartFrames(
 
 int runSimulatePatches(const SimulatePatchesOptions& o) {
   const auto truth = loadTruth(o.camera, false);
-  if (!truth) return reportFailure(truth.error(), kExitBadInput);
+  if (!truth) return reportFailure(truth.error());
   std::error_code error;
   fs::create_directories(o.out, error);
   if (error)
-    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()),
-                         kExitRefused);
+    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()));
   calib::SimulationOptions simulation;
   simulation.noise.readNoiseCode = o.noiseCode;
   const std::vector<calib::PatchSpec> chart = patchChart(*truth, simulation.exposureUs);
   const fs::path patchesPath = fs::path(o.out) / "patches.toml";
   if (auto saved = calib::io::savePatchFile(chart, patchesPath); !saved)
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   const auto frames = writeChartFrames(o, *truth, chart, simulation);
-  if (!frames) return reportFailure(frames.error(), kExitRefused);
+  if (!frames) return reportFailure(frames.error());
   fmt::print("wrote {}: {} fit patches from {:.3g} to {:.3g} cd/m2 and 2 check patches\n",
              patchesPath.string(), kFitPatches, chart.front().luminanceCdM2,
              chart[kFitPatches - 1].luminanceCdM2);
@@ -160,9 +159,9 @@ int runSimulatePatches(const SimulatePatchesOptions& o) {
 
 int runSimulateFrame(const SimulateFrameOptions& o) {
   const auto truth = loadTruth(o.camera, true);
-  if (!truth) return reportFailure(truth.error(), kExitBadInput);
+  if (!truth) return reportFailure(truth.error());
   const auto map = mapio::loadMap(o.map, o.layout);
-  if (!map) return reportFailure(map.error().message, kExitBadInput);
+  if (!map) return reportFailure(map.error().message);
   calib::SimulationOptions simulation;
   simulation.radianceScale = o.scale;
   simulation.noise.readNoiseCode = o.noiseCode;
@@ -170,7 +169,7 @@ int runSimulateFrame(const SimulateFrameOptions& o) {
   const calib::RawFrame frame =
       calib::simulateFrame(calib::radianceFromMap(*map), *truth, simulation);
   if (auto saved = calib::io::saveRawFrame(frame, o.out); !saved)
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   fmt::print(
       "wrote {}: {} x {} {}, the camera in front of {} (x {:g} cd/m2 per map unit), {:g} us\n",
       o.out, frame.width, frame.height, calib::pixelFormatName(frame.format), o.map, o.scale,

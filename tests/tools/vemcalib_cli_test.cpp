@@ -249,12 +249,12 @@ TEST_F(VemcalibCli, CorruptFrameAndBadExposureGiveOneSentence) {
                 "positive number of microseconds");
 }
 
-TEST_F(VemcalibCli, ShowRefusesABadCameraFileWithTheLoadersSentenceAndExit2) {
+TEST_F(VemcalibCli, ShowRefusesABadCameraFileWithTheLoadersSentenceAndExit1) {
   std::string text = readTextFile(kExampleCamera);
   text.replace(text.find("unit = \"px\" }     # k1"), 13, "unit = \"mm\" }");
   std::ofstream(dir_ / "bad.toml") << text;
   const CommandRun r = run("show " + (dir_ / "bad.toml").string());
-  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.exitCode, 1);  // a file that cannot be used is a failure at run time, not usage
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_TRUE(contains(r.err, "bad.toml: geometric.k: expected unit \"px\", found \"mm\""))
       << r.err;
@@ -317,13 +317,13 @@ TEST_F(VemcalibCli, ApplyRefusesACameraWithoutLensAndAFrameOfAnotherSize) {
   ASSERT_TRUE(io::saveCameraFile(noLens, dir_ / "nolens.toml"));
   const CommandRun a = run("apply --camera " + (dir_ / "nolens.toml").string() + " --frame " +
                         sim("patches-1.png").string() + " --out " + (dir_ / "m.exr").string());
-  EXPECT_EQ(a.exitCode, 2);
+  EXPECT_EQ(a.exitCode, 1);
   EXPECT_EQ(lineCount(a.err), 1) << a.err;
   EXPECT_TRUE(contains(a.err, "nolens.toml: the camera has no geometric section")) << a.err;
   ASSERT_TRUE(io::saveRawFrame(RawFrame::blank(64, 48, {3, 12}), dir_ / "small.png"));
   const CommandRun b = run("apply --camera " + kExampleCamera.string() + " --frame " +
                         (dir_ / "small.png").string() + " --out " + (dir_ / "m.exr").string());
-  EXPECT_EQ(b.exitCode, 2);
+  EXPECT_EQ(b.exitCode, 1);
   EXPECT_EQ(lineCount(b.err), 1) << b.err;
   EXPECT_TRUE(contains(b.err, "small.png: the frames are 64 x 48 RGB12 but the camera")) << b.err;
   EXPECT_FALSE(fs::exists(dir_ / "m.exr"));
@@ -336,6 +336,40 @@ TEST_F(VemcalibCli, HelpOfTheToolAndOfEveryCommandShowsAnExample) {
     const CommandRun r = run(std::string(command) + " --help");
     EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.out, "Example")) << "vemcalib " << command << " --help:\n" << r.out;
+  }
+}
+
+// Issue 17: one exit convention for every tool (util/cli_conventions.h). vemcalib exited 105/106
+// on a bad flag or value and 2 on an input file it could not use.
+TEST_F(VemcalibCli, BadFlagAndBadValueExitTwoNotCli11sOwnCodes) {
+  for (const std::string args :
+       {"show --frobnicate", "fisheye --image x.png --board 9x6 --square many --out c.toml",
+        "simulate frame --camera c.toml --map m.exr --noise -1 --out r.png", "frobnicate"}) {
+    const CommandRun r = run(args);
+    EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
+    EXPECT_TRUE(r.err.starts_with("vemcalib: error: ")) << r.err;
+    EXPECT_TRUE(contains(r.err, " --help')")) << r.err;
+  }
+}
+
+TEST_F(VemcalibCli, MissingInputFileIsAFailureAtRunTimeExitOneNotTwo) {
+  const CommandRun r = run("show " + (dir_ / "nothere.toml").string());
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "nothere.toml")) << r.err;
+}
+
+TEST_F(VemcalibCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
+  for (const char* command :
+       {"", "photometric", "fisheye", "response", "simulate", "apply", "show", "simulate patches",
+        "simulate frame", "simulate boards", "simulate brackets"}) {
+    const CommandRun r = run(std::string(command) + " --help");
+    EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
+    const std::string page = r.out.substr(0, r.out.find_last_not_of('\n') + 1);
+    EXPECT_TRUE(page.ends_with(
+        "\nExit status: 0 success, 1 failure at run time, 2 usage error (bad flag or value)."))
+        << "vemcalib " << command << " --help:\n" << r.out;
   }
 }
 
