@@ -157,6 +157,27 @@ int runSimulatePatches(const SimulatePatchesOptions& o) {
   return EXIT_SUCCESS;
 }
 
+// The walk-through's next step (docs/calibration.md): the camera fitted in the earlier steps, not
+// the truth, turns the frame just written into a map. The fitting steps write DIR/camera.toml
+// beside their frames; when that file is there (and is not the truth) it is named, else the hint
+// says which file it means.
+std::string nextApplyCommand(const SimulateFrameOptions& o) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(o.out).parent_path();
+  const fs::path fitted = folder / "camera.toml";
+  const auto applyWith = [&](const std::string& camera) {
+    return fmt::format("vemcalib apply --camera {} --frame {} --out {}", camera, o.out,
+                       (folder / "polar.exr").string());
+  };
+  std::error_code ec;
+  if (fs::is_regular_file(fitted, ec) && !fs::equivalent(fitted, o.camera, ec)) {
+    return applyWith(fitted.string());
+  }
+  return applyWith("CAMERA") +
+         fmt::format(", CAMERA being the camera file you fitted (e.g. {}; {} is the truth)",
+                     fitted.string(), o.camera);
+}
+
 int runSimulateFrame(const SimulateFrameOptions& o) {
   const auto truth = loadTruth(o.camera, true);
   if (!truth) return reportFailure(truth.error());
@@ -174,7 +195,7 @@ int runSimulateFrame(const SimulateFrameOptions& o) {
       "wrote {}: {} x {} {}, the camera in front of {} (x {:g} cd/m2 per map unit), {:g} us\n",
       o.out, frame.width, frame.height, calib::pixelFormatName(frame.format), o.map, o.scale,
       frame.exposureUs);
-  fmt::print("next: vemcalib apply --camera {} --frame {} --out map.exr\n", o.camera, o.out);
+  fmt::print("next: {}\n", nextApplyCommand(o));
   return EXIT_SUCCESS;
 }
 
@@ -193,10 +214,11 @@ prints the `vemcalib photometric` command that calibrates from them.)";
 
 constexpr const char* kFrameFooter = R"(Example:
   vemcalib simulate frame --camera config/camera-example.toml --map ../shared/data/hdri/park.exr \
-      --scale 1 --out sky.png
-  vemcalib apply --camera config/camera-example.toml --frame sky.png --out sky.exr
+      --scale 1 --out sim/raw.png
+  vemcalib apply --camera sim/camera.toml --frame sim/raw.png --out sim/polar.exr
 The map's values times --scale are luminance in cd/m2 per channel; the camera looks at it through
-its lens and orientation, at 1000 us and gain 1, with Gaussian read noise of --noise codes.)";
+its lens and orientation, at 1000 us and gain 1, with Gaussian read noise of --noise codes.
+The next step applies the camera you fitted (the earlier steps' DIR/camera.toml) to the frame.)";
 
 }  // namespace
 

@@ -311,6 +311,36 @@ TEST_F(VemcalibCli, ApplyTurnsASimulatedFrameBackIntoTheSkyTheCameraSaw) {
   }
 }
 
+// Issue 17: simulate frame's hint applied the truth camera to "map.exr"; the walk-through applies
+// the camera fitted in the earlier steps (DIR/camera.toml) to the frame just written.
+TEST_F(VemcalibCli, SimulateFrameHintAppliesTheFittedCameraToTheFrameWrittenNotTheTruth) {
+  vem::EnvMap sky = vem::EnvMap::filled(vem::MapLayout::Sphere, 32, 16, glm::vec3(50.0F));
+  ASSERT_TRUE(vem::mapio::saveMap(sky, dir_ / "sky.exr"));
+  fs::create_directories(dir_ / "sim");
+  const std::string simulate = "simulate frame --camera " + kExampleCamera.string() + " --map " +
+                               (dir_ / "sky.exr").string() + " --noise 0 --out " +
+                               (dir_ / "sim" / "raw.png").string();
+  const CommandRun before = run(simulate);  // no camera fitted yet
+  ASSERT_EQ(before.exitCode, 0) << before.err;
+  EXPECT_TRUE(contains(before.out, "next: vemcalib apply --camera CAMERA --frame " +
+                                       (dir_ / "sim" / "raw.png").string() + " --out " +
+                                       (dir_ / "sim" / "polar.exr").string() +
+                                       ", CAMERA being the camera file you fitted (e.g. " +
+                                       (dir_ / "sim" / "camera.toml").string()))
+      << before.out;
+  EXPECT_FALSE(contains(before.out, "--camera " + kExampleCamera.string())) << before.out;
+  EXPECT_FALSE(contains(before.out, "map.exr")) << before.out;
+
+  fs::copy_file(kExampleCamera, dir_ / "sim" / "camera.toml");  // as if fitted
+  const CommandRun after = run(simulate);
+  ASSERT_EQ(after.exitCode, 0) << after.err;
+  EXPECT_TRUE(contains(after.out, "next: vemcalib apply --camera " +
+                                      (dir_ / "sim" / "camera.toml").string() + " --frame " +
+                                      (dir_ / "sim" / "raw.png").string() + " --out " +
+                                      (dir_ / "sim" / "polar.exr").string() + "\n"))
+      << after.out;
+}
+
 TEST_F(VemcalibCli, ApplyRefusesACameraWithoutLensAndAFrameOfAnotherSize) {
   CameraCalibration noLens = *io::loadCameraFile(kExampleCamera);
   noLens.lens.reset();
