@@ -14,6 +14,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "frame_arguments.h"
 #include "mapio/map_file.h"
 
@@ -129,11 +130,13 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", o->out, "Map file to write (.exr, .hdr or .pfm)")->required();
   cmd->add_option("--width", o->width, "Map width in pixels (columns over the azimuth)")
       ->capture_default_str()
-      ->check(CLI::Range(1, mapio::kMaxMapWidth));
+      ->type_name(help::rangeName(1, mapio::kMaxMapWidth))
+      ->check(help::quiet(CLI::Range(1, mapio::kMaxMapWidth)));
   cmd->add_option(
          "--height", o->height,
          "Map height in pixels (default: width / 4 for a hemisphere, width / 2 for a sphere)")
-      ->check(CLI::Range(1, mapio::kMaxMapHeight));
+      ->type_name(help::rangeName(1, mapio::kMaxMapHeight))
+      ->check(help::quiet(CLI::Range(1, mapio::kMaxMapHeight)));
   const std::map<std::string, MapLayout> layouts{{"sphere", MapLayout::Sphere},
                                                  {"hemisphere", MapLayout::Hemisphere}};
   cmd->add_option("--layout", o->layout, "hemisphere (default: the camera's polar map) | sphere")
@@ -141,7 +144,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--mask-out", o->maskOut, "Also write the valid-pixel mask (8-bit .png)");
   cmd->add_option("--gain", o->gain, "Linear gain the frame was taken with")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->callback([o, &exitCode] { exitCode = runApply(*o); });
 }
 

@@ -21,6 +21,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "frame_arguments.h"
 
 namespace vem::calibtool {
@@ -186,20 +187,23 @@ void addFisheyeCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--image", o->images, "Images of the checkerboard: FILE ...")->required();
   cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
       ->required()
-      ->check(boardSizeValidator());
+      ->type_name("COLSxROWS")
+      ->check(help::quiet(boardSizeValidator()));
   cmd->add_option("--square", o->squareMm, "Side of a square, mm")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--fov", o->fovDeg, "The lens's full field of view, degrees (e.g. 190)")
       ->required()
-      ->check(CLI::Range(1.0, 360.0));
+      ->type_name(help::rangeName(1.0, 360.0))
+      ->check(help::quiet(CLI::Range(1.0, 360.0)));
   cmd->add_option("--out", o->out, "Camera file to update or create (TOML)")->required();
   cmd->add_option("--max-rms", o->maxRmsPx, "Largest RMS reprojection error accepted, pixels")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--min-views", o->minViews, "Fewest views with a board accepted")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1000));
+      ->type_name(help::rangeName(1, 1000))
+      ->check(help::quiet(CLI::Range(1, 1000)));
   cmd->add_option("--bits", o->bits,
                   "Bits per code in 16-bit images, e.g. 12 (default: the --out file's, else the "
                   "image's depth)")

@@ -16,6 +16,7 @@
 #include "calibration_summary.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "frame_arguments.h"
 
 namespace vem::calibtool {
@@ -219,25 +220,25 @@ void addPhotometricCommand(CLI::App& app, int& exitCode) {
       ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
   cmd->add_option("--black-level", o->blackLevelCode,
                   "Black level in codes (default: the --out file's, else 0)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--saturation", o->saturationCode,
                   "Saturation code (default: the --out file's, else the format's largest code)")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--bits", o->bits,
                   "Bits per code in 16-bit images, e.g. 12 (default: the --out file's, else the "
                   "image's depth)")
       ->check(CLI::IsMember({8, 10, 12, 16}));
   cmd->add_option("--gain", o->gain, "Linear gain the frames were taken with")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--max-residual", o->maxResidualPercent,
                   "Largest fit-patch residual accepted, percent")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--max-check-error", o->maxCheckErrorPercent,
                   "Largest check-patch error accepted, percent")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->callback([o, &exitCode] { exitCode = runPhotometric(*o); });
 }
 

@@ -19,6 +19,7 @@
 #include "calib/io/camera_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "frame_arguments.h"
 #include "mapio/map_file.h"
 
@@ -249,13 +250,14 @@ void addResponseCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", o->out, "Camera file to update or create (TOML)")->required();
   cmd->add_option("--scale", o->scaleCdM2,
                   "Absolute scale, cd/m2 us per relative exposure unit (default 1: relative)")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--black-level", o->blackLevelCode, "Black level in codes")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--saturation", o->saturationCode, "Saturation code")
       ->capture_default_str()
-      ->check(CLI::Range(1.0, 255.0));
+      ->type_name(help::rangeName(1.0, 255.0))
+      ->check(help::quiet(CLI::Range(1.0, 255.0)));
   cmd->add_option("--merge-out", o->mergeOut,
                   "Also write the merged bracket (sensor pixels, luminance) as an EXR to look at");
   cmd->callback([o, &exitCode] { exitCode = runResponse(*o); });

@@ -21,6 +21,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 
 namespace vem::calibtool {
 namespace {
@@ -130,18 +131,20 @@ void addSimulateBoardsCommand(CLI::App& simulate, int& exitCode) {
       ->required();
   cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
       ->required()
-      ->check(boardSizeValidator());
+      ->type_name("COLSxROWS")
+      ->check(help::quiet(boardSizeValidator()));
   cmd->add_option("--square", o->squareMm, "Side of a square, mm")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--views", o->views, "Number of views")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->type_name(help::rangeName(1, 100))
+      ->check(help::quiet(CLI::Range(1, 100)));
   cmd->add_option("--seed", o->seed, "Random seed (the same seed gives the same views)")
       ->capture_default_str();
   cmd->add_option("--noise", o->noiseCode, "Read noise, codes (standard deviation)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--out", o->out, "Folder for board-NN.png")->required();
   cmd->callback([o, &exitCode] { exitCode = runSimulateBoards(*o); });
 }

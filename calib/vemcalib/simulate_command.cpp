@@ -17,6 +17,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "mapio/map_file.h"
 
 namespace vem::calibtool {
@@ -232,10 +233,11 @@ void addSimulatePatchesCommand(CLI::App& simulate, int& exitCode) {
   cmd->add_option("--out", o->out, "Folder for patches.toml and patches-K.png")->required();
   cmd->add_option("--frames", o->frames, "Number of frames")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->type_name(help::rangeName(1, 100))
+      ->check(help::quiet(CLI::Range(1, 100)));
   cmd->add_option("--noise", o->noiseCode, "Read noise, codes (standard deviation)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--seed", o->seed, "Random seed (the same seed gives the same frames)")
       ->capture_default_str();
   cmd->callback([o, &exitCode] { exitCode = runSimulatePatches(*o); });
@@ -257,10 +259,10 @@ void addSimulateFrameCommand(CLI::App& simulate, int& exitCode) {
       ->transform(CLI::CheckedTransformer(layouts, CLI::ignore_case));
   cmd->add_option("--scale", o->scale, "Luminance in cd/m2 of one map unit")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--noise", o->noiseCode, "Read noise, codes (standard deviation)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
   cmd->callback([o, &exitCode] { exitCode = runSimulateFrame(*o); });
 }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -167,6 +168,21 @@ TEST_F(VemtoolCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
     EXPECT_TRUE(page.ends_with(
         "\nExit status: 0 success, 1 failure at run time, 2 usage error (bad flag or value)."))
         << "vemtool " << command << " --help:\n" << r.out;
+  }
+}
+
+// Issue 17: help pages showed the parser's internals ("INT:INT in [1 - 65536]", "TEXT:FILE",
+// "FLOAT:POSITIVE", enum maps "{a->0} OR {0}", "{false}").
+TEST_F(VemtoolCli, NoHelpPageShowsTheParsersInternals) {
+  const std::regex typeAndValidator{R"(\b(TEXT|INT|UINT|FLOAT|BOOLEAN):)"};
+  for (const char* command :
+       {"", "lights", "filters", "info", "recover", "synth", "export", "import", "subscribe"}) {
+    const CommandRun r = run(std::string(command) + " --help");
+    ASSERT_EQ(r.exitCode, 0) << command << ": " << r.err;
+    for (const char* internal : {"->", "ENUM", "{false}", " OR {", " in [", "POSITIVE"})
+      EXPECT_EQ(r.out.find(internal), std::string::npos)
+          << "vemtool " << command << " --help shows " << internal << ":\n" << r.out;
+    EXPECT_FALSE(std::regex_search(r.out, typeAndValidator)) << "vemtool " << command << ":\n" << r.out;
   }
 }
 

@@ -22,6 +22,7 @@
 
 #include "client/stream_client.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "light_json.h"
 #include "proto/stream_protocol.h"
 
@@ -224,31 +225,36 @@ void addSubscribeCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("url", options->url, "ws://HOST:PORT[/PATH] or wss://...")->required();
   auto* token = cmd->add_option("--token", options->token, "The daemon's bearer token");
   cmd->add_option("--token-file", options->tokenFile, "A file whose first line is the token")
-      ->check(CLI::ExistingFile)
+      ->type_name("FILE")
+      ->check(help::quiet(CLI::ExistingFile))
       ->excludes(token);
   cmd->add_option("--what", options->what, "lights, cubemap or lights,cubemap (default: lights)")
       ->delimiter(',')
       ->check(CLI::IsMember({"lights", "cubemap"}));
   cmd->add_option("--cubemap-rate", options->cubemapRateHz, "Cube maps per second (default 1)")
-      ->check(CLI::Range(0.01, stream::kMaxCubemapRateHz));
+      ->type_name(help::rangeName(0.01, stream::kMaxCubemapRateHz))
+      ->check(help::quiet(CLI::Range(0.01, stream::kMaxCubemapRateHz)));
   cmd->add_option("--cubemap-face", options->cubemapFacePx,
                   "Cube face size in texels (default 64; without the token at most the daemon's "
                   "[stream] cubemap_max_face_px)")
-      ->check(CLI::Range(stream::kMinCubeFacePx, stream::kMaxCubeFacePx));
+      ->type_name(help::rangeName(stream::kMinCubeFacePx, stream::kMaxCubeFacePx))
+      ->check(help::quiet(CLI::Range(stream::kMinCubeFacePx, stream::kMaxCubeFacePx)));
   cmd->add_option("--cubemap-levels", options->cubemapLevels,
                   "Cube-map levels: 1 (default) for none below the face size, up to 8")
-      ->check(CLI::Range(1, stream::kMaxCubeLevels));
+      ->type_name(help::rangeName(1, stream::kMaxCubeLevels))
+      ->check(help::quiet(CLI::Range(1, stream::kMaxCubeLevels)));
   cmd->add_option("--frames", options->frames, "Exit after N frames (default: never)");
   cmd->add_option("--timeout", options->timeoutS,
                   "Seconds to connect and receive the first frame, then exit 1 (0: wait for ever)")
       ->option_text("SECONDS (default: 10)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--duration", options->durationS,
                   "Stop after S seconds (exit 1 when --frames were not all received)")
       ->option_text("SECONDS")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--ca-file", options->caFile, "wss: trust the CA certificates of this PEM file")
-      ->check(CLI::ExistingFile);
+      ->type_name("FILE")
+      ->check(help::quiet(CLI::ExistingFile));
   cmd->callback([options, &exitCode] { exitCode = runSubscribe(*options); });
 }
 

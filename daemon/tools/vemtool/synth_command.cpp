@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "plain_help.h"
 #include "mapio/map_file.h"
 #include "synth/scene_factory.h"
 #include "synth/synthetic_camera.h"
@@ -124,24 +125,26 @@ void addSynthCommand(CLI::App& app, int& exitCode) {
       ->required();
   cmd->add_option("--frames", o->frames, "Number of frames")
       ->required()
-      ->check(CLI::Range(1, 1000000));
+      ->type_name(help::rangeName(1, 1000000))
+      ->check(help::quiet(CLI::Range(1, 1000000)));
   cmd->add_option("--rate", o->rateHz,
                   "Frames per second (default: the scene's natural rate, 30 Hz for every scene)")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--out", o->out, "The recording to write (.vem)")->required();
   cmd->add_option(
       "--camera", o->camera,
       "Camera file to render through (default: the built-in config/camera-example.toml)");
   cmd->add_option("--start", o->startS, "Scene time of the first frame, in seconds (default 0)");
   cmd->add_option("--noise", o->noiseCode, "Gaussian read noise in codes (default 0: exact codes)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--seed", o->seed, "Seed of the noise and of the clouds (default 1)");
   cmd->add_option("--samples", o->samples,
                   "Samples per pixel and axis (default 1: each pixel's centre)")
-      ->check(CLI::Range(1, 8));
+      ->type_name(help::rangeName(1, 8))
+      ->check(help::quiet(CLI::Range(1, 8)));
   cmd->add_option("--hdri-scale", o->hdriScale,
                   "hdri:FILE: the map's values times this are cd/m2 (default 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--pan", o->panDegPerS, "hdri:FILE: degrees per second it turns (default 10)");
   cmd->add_flag("--overwrite", o->overwrite, "Replace an existing --out");
   cmd->callback([o, &exitCode] { exitCode = runSynth(*o); });
