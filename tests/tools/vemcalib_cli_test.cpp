@@ -10,7 +10,9 @@
 #include <fstream>
 #include <numbers>
 #include <regex>
+#include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -417,6 +419,77 @@ TEST_F(VemcalibCli, NoHelpPageShowsTheParsersInternals) {
       EXPECT_EQ(r.out.find(internal), std::string::npos)
           << "vemcalib " << command << " --help shows " << internal << ":\n" << r.out;
     EXPECT_FALSE(std::regex_search(r.out, typeAndValidator)) << "vemcalib " << command << ":\n" << r.out;
+  }
+}
+
+// Issue 17: `vemcalib show --compare TRUTH.toml`, each fitted value beside the truth and how far
+// apart they are in pixels, degrees and per cent of luminance.
+class VemcalibCompare : public VemcalibCli {
+ protected:
+  // The number before `unit` on the table line that starts with `name` (NaN when none).
+  static double differenceOn(const std::string& out, const std::string& name,
+                             const std::string& unit) {
+    std::istringstream lines(out);
+    for (std::string line; std::getline(lines, line);) {
+      const std::size_t at = line.find("  " + name);
+      if (at != 0) continue;
+      const std::size_t end = line.rfind(unit);
+      const std::size_t begin = line.rfind(' ', end - 1);
+      return std::stod(line.substr(begin + 1, end - begin - 1));
+    }
+    return std::nan("");
+  }
+  CommandRun compare(const CameraCalibration& fitted) const {
+    EXPECT_TRUE(io::saveCameraFile(fitted, dir_ / "fitted.toml"));
+    return run("show " + (dir_ / "fitted.toml").string() + " --compare " + kExampleCamera.string());
+  }
+};
+
+TEST_F(VemcalibCompare, AFileComparedWithItselfDiffersByNothing) {
+  const CommandRun r = run("show " + kExampleCamera.string() + " --compare " + kExampleCamera.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(differenceOn(r.out, "luminance, max", " %"), 0.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "luminance, rms", " %"), 0.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "projection, max", " px"), 0.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "direction, max", " deg"), 0.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "principal point x", " px"), 0.0) << r.out;
+}
+
+TEST_F(VemcalibCompare, APrincipalPointShiftedBy2PxShows2PxAndAboutAThirdOfADegree) {
+  CameraCalibration fitted = *io::loadCameraFile(kExampleCamera);
+  fitted.lens->principalPointPx.x += 2.0;
+  const CommandRun r = compare(fitted);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NEAR(differenceOn(r.out, "principal point x", " px"), 2.0, 1e-9) << r.out;
+  EXPECT_NEAR(differenceOn(r.out, "projection, max", " px"), 2.0, 1e-3) << r.out;
+  EXPECT_NEAR(differenceOn(r.out, "projection, rms", " px"), 2.0, 1e-3) << r.out;
+  // 2 px over r'(0) = k1 = 310 px per radian near the axis: 0.37 deg; more where r' is smaller.
+  EXPECT_GT(differenceOn(r.out, "direction, max", " deg"), 0.3) << r.out;
+  EXPECT_LT(differenceOn(r.out, "direction, max", " deg"), 1.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "luminance, max", " %"), 0.0) << r.out;
+}
+
+TEST_F(VemcalibCompare, AResponseReading10PercentMoreLuminanceShows10Percent) {
+  CameraCalibration fitted = *io::loadCameraFile(kExampleCamera);
+  auto& log = std::get<LogResponse>(fitted.photometric->response);
+  for (int c = 0; c < 3; ++c) log.aCode[c] -= log.bCodePerLn[c] * std::log(1.1);  // L' = 1.1 L
+  const CommandRun r = compare(fitted);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NEAR(differenceOn(r.out, "luminance, max", " %"), 10.0, 0.01) << r.out;
+  EXPECT_NEAR(differenceOn(r.out, "luminance, rms", " %"), 10.0, 0.01) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "projection, max", " px"), 0.0) << r.out;
+}
+
+TEST_F(VemcalibCompare, AMissingOrBrokenTruthFileIsOneSentenceNamingItAndExit1) {
+  std::ofstream(dir_ / "broken.toml") << "this is [not a camera file\n";
+  for (const std::string truth : {"nothere.toml", "broken.toml"}) {
+    const CommandRun r =
+        run("show " + kExampleCamera.string() + " --compare " + (dir_ / truth).string());
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_TRUE(r.err.starts_with("vemcalib: error: --compare: ")) << r.err;
+    EXPECT_TRUE(contains(r.err, truth)) << r.err;
+    EXPECT_EQ(r.out, "");
   }
 }
 
