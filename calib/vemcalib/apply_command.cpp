@@ -14,6 +14,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "frame_arguments.h"
 #include "mapio/map_file.h"
 
@@ -80,14 +81,13 @@ void printResult(const ApplyOptions& o, const EnvMap& map, const calib::PolarRem
 
 int runApply(const ApplyOptions& o) {
   const auto calibration = loadCalibrated(o.camera);
-  if (!calibration) return reportFailure(calibration.error(), kExitBadInput);
+  if (!calibration) return reportFailure(calibration.error());
   const auto frame = loadMatchingFrame(o, *calibration);
-  if (!frame) return reportFailure(frame.error(), kExitBadInput);
+  if (!frame) return reportFailure(frame.error());
   const int height =
       o.height.value_or(o.layout == MapLayout::Hemisphere ? o.width / 4 : o.width / 2);
   if (height < 1)
-    return reportFailure(fmt::format("--width {} leaves no rows for the map", o.width),
-                         kExitBadInput);
+    return reportFailure(fmt::format("--width {} leaves no rows for the map", o.width));
   const calib::PolarRemap remap =
       calib::buildPolarRemap(*calibration->lens, calibration->orientation, frame->width,
                              frame->height, o.layout, o.width, height);
@@ -96,10 +96,10 @@ int runApply(const ApplyOptions& o) {
   EnvMap map;
   calib::applyPolarRemap(remap, *frame, lut, map);
   if (auto saved = mapio::saveMap(map, o.out); !saved)
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   if (o.maskOut)
     if (auto saved = saveMask(remap, *o.maskOut); !saved)
-      return reportFailure(saved.error(), kExitRefused);
+      return reportFailure(saved.error());
   printResult(o, map, remap);
   return EXIT_SUCCESS;
 }
@@ -114,8 +114,7 @@ resamples the fisheye image into a polar map (the geometric and orientation sect
 hemisphere map has W columns over the azimuth and H rows from the zenith to the horizon
 (docs/conventions.md). Map pixels the lens does not see are 0 (and 0 in the mask).
 Refuses a camera file without photometric or geometric section, and a frame whose size or
-format differs from the camera's.
-Exit status: 0 written, 1 the map could not be written, 2 an input could not be used.)";
+format differs from the camera's.)";
 
 }  // namespace
 
@@ -131,11 +130,13 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", o->out, "Map file to write (.exr, .hdr or .pfm)")->required();
   cmd->add_option("--width", o->width, "Map width in pixels (columns over the azimuth)")
       ->capture_default_str()
-      ->check(CLI::Range(1, mapio::kMaxMapWidth));
+      ->type_name(help::rangeName(1, mapio::kMaxMapWidth))
+      ->check(help::quiet(CLI::Range(1, mapio::kMaxMapWidth)));
   cmd->add_option(
          "--height", o->height,
          "Map height in pixels (default: width / 4 for a hemisphere, width / 2 for a sphere)")
-      ->check(CLI::Range(1, mapio::kMaxMapHeight));
+      ->type_name(help::rangeName(1, mapio::kMaxMapHeight))
+      ->check(help::quiet(CLI::Range(1, mapio::kMaxMapHeight)));
   const std::map<std::string, MapLayout> layouts{{"sphere", MapLayout::Sphere},
                                                  {"hemisphere", MapLayout::Hemisphere}};
   cmd->add_option("--layout", o->layout, "hemisphere (default: the camera's polar map) | sphere")
@@ -143,7 +144,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--mask-out", o->maskOut, "Also write the valid-pixel mask (8-bit .png)");
   cmd->add_option("--gain", o->gain, "Linear gain the frame was taken with")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->callback([o, &exitCode] { exitCode = runApply(*o); });
 }
 

@@ -12,9 +12,9 @@
 
 namespace vem::calibtool {
 
-int reportFailure(const std::string& sentence, int exitCode) {
+int reportFailure(const std::string& sentence) {
   spdlog::error("{}", sentence);
-  return exitCode;
+  return cli::kExitFailure;
 }
 
 std::expected<std::optional<calib::CameraCalibration>, std::string> loadCameraToMerge(

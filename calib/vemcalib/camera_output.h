@@ -9,16 +9,16 @@
 
 #include "calib/core/camera_calibration.h"
 #include "calib/core/raw_frame.h"
+#include "util/cli_conventions.h"
 
 namespace vem::calibtool {
 
-// Exit status of every command: 0 done, kExitRefused when the calibration was refused or could not
-// be written (nothing written), kExitBadInput when an input file or option could not be used.
-inline constexpr int kExitRefused = 1;
-inline constexpr int kExitBadInput = 2;
+// Exit status of every command (util/cli_conventions.h): 0 done, cli::kExitFailure (1) when an
+// input could not be used or the calibration was refused or could not be written (nothing is
+// written then); 2 is the parser's alone, for a bad flag or value.
 
-// Logs `sentence` as the command's one error line and returns `exitCode`.
-int reportFailure(const std::string& sentence, int exitCode);
+// Logs `sentence` as the command's one error line and returns cli::kExitFailure.
+int reportFailure(const std::string& sentence);
 
 // The calibration already at `path` (nullopt when there is no file), or the loader's sentence: a
 // file that does not load is never overwritten.

@@ -21,6 +21,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "frame_arguments.h"
 
 namespace vem::calibtool {
@@ -127,7 +128,7 @@ int writeCalibration(const FisheyeOptions& o, const FisheyeInputs& in,
   calibration.geometricQuality = fit.quality;
   calibration.geometricQuality.date = utcDateNow();
   if (auto saved = calib::io::saveCameraFile(calibration, o.out); !saved)
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   fmt::print("wrote {}: {}\n", o.out,
              in.existing ? "the geometric section (the rest of the file is kept)"
                          : "a new camera file (model and serial \"unknown\": edit them there)");
@@ -145,21 +146,20 @@ std::string refusalSentence(const calib::FisheyeFitFailure& failure, const Board
 
 int runFisheye(const FisheyeOptions& o) {
   auto inputs = loadInputs(o);
-  if (!inputs) return reportFailure(inputs.error(), kExitBadInput);
+  if (!inputs) return reportFailure(inputs.error());
   const auto views = findBoards(o, *inputs);
-  if (!views) return reportFailure(views.error() + " (nothing was written)", kExitRefused);
+  if (!views) return reportFailure(views.error() + " (nothing was written)");
   if (int(views->frames.size()) < o.minViews)
     return reportFailure(
         fmt::format("{} of the {} images show the {}x{} board; the fit needs at least {} "
                     "(--min-views) (nothing was written)",
                     views->frames.size(), o.images.size(), inputs->board.innerCols,
-                    inputs->board.innerRows, o.minViews),
-        kExitRefused);
+                    inputs->board.innerRows, o.minViews));
   spdlog::info("fitting the lens to {} views", views->frames.size());
   const calib::FisheyeFitOptions fitOptions{o.fovDeg, o.minViews, o.maxRmsPx};
   const auto fit =
       calib::fitFisheyeRefined(views->frames, views->corners, inputs->board, fitOptions);
-  if (!fit) return reportFailure(refusalSentence(fit.error(), *views), kExitRefused);
+  if (!fit) return reportFailure(refusalSentence(fit.error(), *views));
   printFit(*fit, *views, o.maxRmsPx);
   return writeCalibration(o, *inputs, *fit);
 }
@@ -175,8 +175,7 @@ Refuses, in one sentence, writing nothing: fewer views with a board than --min-v
 without the board (unless --skip-missing, which leaves it out with a warning); a fit that does not
 converge; an RMS above --max-rms, overall or in any view; a lens whose r(theta) stops increasing
 before half the --fov (it would fold the image). Otherwise it replaces the geometric section of
-CAMERA_FILE (the rest is kept) or creates the file for the images' sensor.
-Exit status: 0 written, 1 refused (nothing written), 2 an input could not be used.)";
+CAMERA_FILE (the rest is kept) or creates the file for the images' sensor.)";
 
 }  // namespace
 
@@ -188,20 +187,23 @@ void addFisheyeCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--image", o->images, "Images of the checkerboard: FILE ...")->required();
   cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
       ->required()
-      ->check(boardSizeValidator());
+      ->type_name("COLSxROWS")
+      ->check(help::quiet(boardSizeValidator()));
   cmd->add_option("--square", o->squareMm, "Side of a square, mm")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--fov", o->fovDeg, "The lens's full field of view, degrees (e.g. 190)")
       ->required()
-      ->check(CLI::Range(1.0, 360.0));
+      ->type_name(help::rangeName(1.0, 360.0))
+      ->check(help::quiet(CLI::Range(1.0, 360.0)));
   cmd->add_option("--out", o->out, "Camera file to update or create (TOML)")->required();
   cmd->add_option("--max-rms", o->maxRmsPx, "Largest RMS reprojection error accepted, pixels")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--min-views", o->minViews, "Fewest views with a board accepted")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1000));
+      ->type_name(help::rangeName(1, 1000))
+      ->check(help::quiet(CLI::Range(1, 1000)));
   cmd->add_option("--bits", o->bits,
                   "Bits per code in 16-bit images, e.g. 12 (default: the --out file's, else the "
                   "image's depth)")

@@ -16,6 +16,7 @@
 #include "calibration_summary.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "frame_arguments.h"
 
 namespace vem::calibtool {
@@ -159,7 +160,7 @@ int writeCalibration(const PhotometricOptions& o, const PhotometricInputs& in,
   calibration.photometricQuality.date = utcDateNow();
   if (auto saved = calib::io::saveCameraFile(calibration, o.out); !saved) {
     spdlog::error("{}", saved.error().message);
-    return kExitRefused;
+    return cli::kExitFailure;
   }
   fmt::print("wrote {}: {}\n", o.out,
              in.existing ? "the photometric section (the rest of the file is kept)"
@@ -169,9 +170,9 @@ int writeCalibration(const PhotometricOptions& o, const PhotometricInputs& in,
 
 int runPhotometric(const PhotometricOptions& o) {
   const auto inputs = loadInputs(o);
-  if (!inputs) return reportFailure(inputs.error(), kExitBadInput);
+  if (!inputs) return reportFailure(inputs.error());
   const auto options = fitOptionsFor(o, *inputs);
-  if (!options) return reportFailure(options.error(), kExitBadInput);
+  if (!options) return reportFailure(options.error());
   std::vector<calib::PatchMeasurement> measured;
   for (const calib::PatchSpec& patch : inputs->patches)
     measured.push_back(calib::measurePatch(inputs->frames, patch, options->blackLevelCode,
@@ -181,7 +182,7 @@ int runPhotometric(const PhotometricOptions& o) {
   if (!fit) {
     if (!fit.error().patches.empty()) printTable(fit.error().patches, format.channels);
     spdlog::error("{} (nothing was written)", fit.error().message);
-    return kExitRefused;
+    return cli::kExitFailure;
   }
   printTable(fit->patches, format.channels);
   printSummary(*fit, *options, format);
@@ -200,8 +201,7 @@ Prints each patch's known and fitted luminance and its error in percent, then th
 Refuses, in one sentence, writing nothing: fewer than 3 fit patches; a patch saturated or under
 the black level; codes not increasing with luminance; a fit residual above --max-residual or a
 check error above --max-check-error. Otherwise it replaces the photometric section of CAMERA_FILE
-(the rest is kept) or creates the file.
-Exit status: 0 written, 1 refused (nothing written), 2 an input could not be used.)";
+(the rest is kept) or creates the file.)";
 
 }  // namespace
 
@@ -220,25 +220,25 @@ void addPhotometricCommand(CLI::App& app, int& exitCode) {
       ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
   cmd->add_option("--black-level", o->blackLevelCode,
                   "Black level in codes (default: the --out file's, else 0)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--saturation", o->saturationCode,
                   "Saturation code (default: the --out file's, else the format's largest code)")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--bits", o->bits,
                   "Bits per code in 16-bit images, e.g. 12 (default: the --out file's, else the "
                   "image's depth)")
       ->check(CLI::IsMember({8, 10, 12, 16}));
   cmd->add_option("--gain", o->gain, "Linear gain the frames were taken with")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--max-residual", o->maxResidualPercent,
                   "Largest fit-patch residual accepted, percent")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--max-check-error", o->maxCheckErrorPercent,
                   "Largest check-patch error accepted, percent")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->callback([o, &exitCode] { exitCode = runPhotometric(*o); });
 }
 

@@ -19,6 +19,7 @@
 #include "calib/io/camera_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "frame_arguments.h"
 #include "mapio/map_file.h"
 
@@ -129,7 +130,7 @@ int writeMergedMap(const std::string& path, const calib::MergedBracket& merged) 
     }
   }
   if (auto saved = mapio::saveMap(map, path); !saved) {
-    return reportFailure(saved.error().message + ": nothing was written", kExitRefused);
+    return reportFailure(saved.error().message + ": nothing was written");
   }
   fmt::print("wrote {}: the merged bracket, {} x {} sensor pixels\n", path, merged.width,
              merged.height);
@@ -145,7 +146,7 @@ int writeCalibration(const ResponseOptions& o, std::optional<calib::CameraCalibr
   calibration.photometricQuality = calib::PhotometricQuality{
       consistency.rmsPercent, consistency.maxPercent, 0.0, 0, 0, utcDateNow()};
   if (auto saved = calib::io::saveCameraFile(calibration, o.out); !saved) {
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   }
   fmt::print("wrote {}: {}\n", o.out,
              merging ? "the photometric section (the rest of the file is kept)"
@@ -195,14 +196,14 @@ MergeCheck checkMerge(std::span<const calib::RawFrame> frames,
 
 int runResponse(const ResponseOptions& o) {
   auto inputs = loadInputs(o);
-  if (!inputs) return reportFailure(inputs.error(), kExitBadInput);
+  if (!inputs) return reportFailure(inputs.error());
   calib::ResponseRecoveryOptions options;
   options.blackLevelCode = o.blackLevelCode;
   options.saturationCode = o.saturationCode;
   options.scaleCdM2 = o.scaleCdM2;
   const auto recovered = calib::recoverResponseWithReport(inputs->frames, options);
   if (!recovered) {
-    return reportFailure(recovered.error().message + ": nothing was written", kExitRefused);
+    return reportFailure(recovered.error().message + ": nothing was written");
   }
   printCurve(*recovered, inputs->frames);
   const calib::PhotometricCalibration photometric{recovered->response, o.blackLevelCode,
@@ -235,8 +236,7 @@ black and of saturation) and the exposures' agreement is printed; [photometric.f
 rms and largest disagreement in percent.
 Refuses, in one sentence, writing nothing: fewer than 2 exposures, frames that are not 8-bit or
 differ in size, equal exposures, exposures spanning less than a stop, a curve that falls.
-Otherwise it replaces the photometric section of CAMERA_FILE (the rest is kept) or creates it.
-Exit status: 0 written, 1 refused (nothing written), 2 an input could not be used.)";
+Otherwise it replaces the photometric section of CAMERA_FILE (the rest is kept) or creates it.)";
 
 }  // namespace
 
@@ -250,13 +250,14 @@ void addResponseCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", o->out, "Camera file to update or create (TOML)")->required();
   cmd->add_option("--scale", o->scaleCdM2,
                   "Absolute scale, cd/m2 us per relative exposure unit (default 1: relative)")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--black-level", o->blackLevelCode, "Black level in codes")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--saturation", o->saturationCode, "Saturation code")
       ->capture_default_str()
-      ->check(CLI::Range(1.0, 255.0));
+      ->type_name(help::rangeName(1.0, 255.0))
+      ->check(help::quiet(CLI::Range(1.0, 255.0)));
   cmd->add_option("--merge-out", o->mergeOut,
                   "Also write the merged bracket (sensor pixels, luminance) as an EXR to look at");
   cmd->callback([o, &exitCode] { exitCode = runResponse(*o); });

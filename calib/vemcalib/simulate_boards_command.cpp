@@ -21,6 +21,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 
 namespace vem::calibtool {
 namespace {
@@ -86,16 +87,15 @@ std::expected<std::vector<std::string>, std::string> writeViews(
 
 int runSimulateBoards(const SimulateBoardsOptions& o) {
   const auto truth = loadTruth(o.camera);
-  if (!truth) return reportFailure(truth.error(), kExitBadInput);
+  if (!truth) return reportFailure(truth.error());
   const auto [cols, rows] = *parseBoardSize(o.board);  // validated by CLI11
   const calib::Checkerboard board{cols, rows, o.squareMm};
   std::error_code error;
   fs::create_directories(o.out, error);
   if (error)
-    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()),
-                         kExitRefused);
+    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()));
   const auto files = writeViews(o, *truth, board);
-  if (!files) return reportFailure(files.error(), kExitRefused);
+  if (!files) return reportFailure(files.error());
   const calib::CameraIdentity& camera = truth->camera;
   fmt::print("wrote {} views of the board ({}): {} to {}, {} x {} {}, read noise {:g} codes\n",
              files->size(), describeBoard(board), files->front(), files->back(),
@@ -131,18 +131,20 @@ void addSimulateBoardsCommand(CLI::App& simulate, int& exitCode) {
       ->required();
   cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
       ->required()
-      ->check(boardSizeValidator());
+      ->type_name("COLSxROWS")
+      ->check(help::quiet(boardSizeValidator()));
   cmd->add_option("--square", o->squareMm, "Side of a square, mm")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--views", o->views, "Number of views")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->type_name(help::rangeName(1, 100))
+      ->check(help::quiet(CLI::Range(1, 100)));
   cmd->add_option("--seed", o->seed, "Random seed (the same seed gives the same views)")
       ->capture_default_str();
   cmd->add_option("--noise", o->noiseCode, "Read noise, codes (standard deviation)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--out", o->out, "Folder for board-NN.png")->required();
   cmd->callback([o, &exitCode] { exitCode = runSimulateBoards(*o); });
 }

@@ -102,16 +102,15 @@ std::optional<std::string> exposureProblem(const std::vector<double>& exposuresU
 }
 
 int runSimulateBrackets(const SimulateBracketsOptions& o) {
-  if (auto problem = exposureProblem(o.exposuresUs)) return reportFailure(*problem, kExitBadInput);
+  if (auto problem = exposureProblem(o.exposuresUs)) return reportFailure(*problem);
   const auto map = mapio::loadMap(o.map);
-  if (!map) return reportFailure(map.error().message, kExitBadInput);
+  if (!map) return reportFailure(map.error().message);
   const auto truth = bracketCamera(o, *map);
-  if (!truth) return reportFailure(truth.error(), kExitBadInput);
+  if (!truth) return reportFailure(truth.error());
   std::error_code error;
   fs::create_directories(o.out, error);
   if (error) {
-    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()),
-                         kExitRefused);
+    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()));
   }
   calib::SimulationOptions simulation;
   simulation.noise = calib::ldrSensorNoise(o.seed);
@@ -121,7 +120,7 @@ int runSimulateBrackets(const SimulateBracketsOptions& o) {
   for (const calib::RawFrame& frame : frames) {
     const fs::path path = fs::path(o.out) / fmt::format("bracket-{:g}.png", frame.exposureUs);
     if (auto saved = calib::io::saveRawFrame(frame, path); !saved) {
-      return reportFailure(saved.error().message, kExitRefused);
+      return reportFailure(saved.error().message);
     }
     tokens.push_back(fmt::format("{}@{:g}", path.string(), frame.exposureUs));
   }

@@ -17,6 +17,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "mapio/map_file.h"
 
 namespace vem::calibtool {
@@ -134,20 +135,19 @@ std::expected<std::vector<std::string>, std::string> writeChartFrames(
 
 int runSimulatePatches(const SimulatePatchesOptions& o) {
   const auto truth = loadTruth(o.camera, false);
-  if (!truth) return reportFailure(truth.error(), kExitBadInput);
+  if (!truth) return reportFailure(truth.error());
   std::error_code error;
   fs::create_directories(o.out, error);
   if (error)
-    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()),
-                         kExitRefused);
+    return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()));
   calib::SimulationOptions simulation;
   simulation.noise.readNoiseCode = o.noiseCode;
   const std::vector<calib::PatchSpec> chart = patchChart(*truth, simulation.exposureUs);
   const fs::path patchesPath = fs::path(o.out) / "patches.toml";
   if (auto saved = calib::io::savePatchFile(chart, patchesPath); !saved)
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   const auto frames = writeChartFrames(o, *truth, chart, simulation);
-  if (!frames) return reportFailure(frames.error(), kExitRefused);
+  if (!frames) return reportFailure(frames.error());
   fmt::print("wrote {}: {} fit patches from {:.3g} to {:.3g} cd/m2 and 2 check patches\n",
              patchesPath.string(), kFitPatches, chart.front().luminanceCdM2,
              chart[kFitPatches - 1].luminanceCdM2);
@@ -158,11 +158,32 @@ int runSimulatePatches(const SimulatePatchesOptions& o) {
   return EXIT_SUCCESS;
 }
 
+// The walk-through's next step (docs/calibration.md): the camera fitted in the earlier steps, not
+// the truth, turns the frame just written into a map. The fitting steps write DIR/camera.toml
+// beside their frames; when that file is there (and is not the truth) it is named, else the hint
+// says which file it means.
+std::string nextApplyCommand(const SimulateFrameOptions& o) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(o.out).parent_path();
+  const fs::path fitted = folder / "camera.toml";
+  const auto applyWith = [&](const std::string& camera) {
+    return fmt::format("vemcalib apply --camera {} --frame {} --out {}", camera, o.out,
+                       (folder / "polar.exr").string());
+  };
+  std::error_code ec;
+  if (fs::is_regular_file(fitted, ec) && !fs::equivalent(fitted, o.camera, ec)) {
+    return applyWith(fitted.string());
+  }
+  return applyWith("CAMERA") +
+         fmt::format(", CAMERA being the camera file you fitted (e.g. {}; {} is the truth)",
+                     fitted.string(), o.camera);
+}
+
 int runSimulateFrame(const SimulateFrameOptions& o) {
   const auto truth = loadTruth(o.camera, true);
-  if (!truth) return reportFailure(truth.error(), kExitBadInput);
+  if (!truth) return reportFailure(truth.error());
   const auto map = mapio::loadMap(o.map, o.layout);
-  if (!map) return reportFailure(map.error().message, kExitBadInput);
+  if (!map) return reportFailure(map.error().message);
   calib::SimulationOptions simulation;
   simulation.radianceScale = o.scale;
   simulation.noise.readNoiseCode = o.noiseCode;
@@ -170,12 +191,12 @@ int runSimulateFrame(const SimulateFrameOptions& o) {
   const calib::RawFrame frame =
       calib::simulateFrame(calib::radianceFromMap(*map), *truth, simulation);
   if (auto saved = calib::io::saveRawFrame(frame, o.out); !saved)
-    return reportFailure(saved.error().message, kExitRefused);
+    return reportFailure(saved.error().message);
   fmt::print(
       "wrote {}: {} x {} {}, the camera in front of {} (x {:g} cd/m2 per map unit), {:g} us\n",
       o.out, frame.width, frame.height, calib::pixelFormatName(frame.format), o.map, o.scale,
       frame.exposureUs);
-  fmt::print("next: vemcalib apply --camera {} --frame {} --out map.exr\n", o.camera, o.out);
+  fmt::print("next: {}\n", nextApplyCommand(o));
   return EXIT_SUCCESS;
 }
 
@@ -194,10 +215,11 @@ prints the `vemcalib photometric` command that calibrates from them.)";
 
 constexpr const char* kFrameFooter = R"(Example:
   vemcalib simulate frame --camera config/camera-example.toml --map ../shared/data/hdri/park.exr \
-      --scale 1 --out sky.png
-  vemcalib apply --camera config/camera-example.toml --frame sky.png --out sky.exr
+      --scale 1 --out sim/raw.png
+  vemcalib apply --camera sim/camera.toml --frame sim/raw.png --out sim/polar.exr
 The map's values times --scale are luminance in cd/m2 per channel; the camera looks at it through
-its lens and orientation, at 1000 us and gain 1, with Gaussian read noise of --noise codes.)";
+its lens and orientation, at 1000 us and gain 1, with Gaussian read noise of --noise codes.
+The next step applies the camera you fitted (the earlier steps' DIR/camera.toml) to the frame.)";
 
 }  // namespace
 
@@ -211,10 +233,11 @@ void addSimulatePatchesCommand(CLI::App& simulate, int& exitCode) {
   cmd->add_option("--out", o->out, "Folder for patches.toml and patches-K.png")->required();
   cmd->add_option("--frames", o->frames, "Number of frames")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->type_name(help::rangeName(1, 100))
+      ->check(help::quiet(CLI::Range(1, 100)));
   cmd->add_option("--noise", o->noiseCode, "Read noise, codes (standard deviation)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--seed", o->seed, "Random seed (the same seed gives the same frames)")
       ->capture_default_str();
   cmd->callback([o, &exitCode] { exitCode = runSimulatePatches(*o); });
@@ -236,10 +259,10 @@ void addSimulateFrameCommand(CLI::App& simulate, int& exitCode) {
       ->transform(CLI::CheckedTransformer(layouts, CLI::ignore_case));
   cmd->add_option("--scale", o->scale, "Luminance in cd/m2 of one map unit")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--noise", o->noiseCode, "Read noise, codes (standard deviation)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--seed", o->seed, "Random seed")->capture_default_str();
   cmd->callback([o, &exitCode] { exitCode = runSimulateFrame(*o); });
 }

@@ -13,6 +13,13 @@ namespace {
 
 constexpr std::string_view kHdriPrefix = "hdri:";
 
+// Each scene's natural rate (scene_factory.h says why each is 30).
+constexpr double kSkyRateHz = 30.0;
+constexpr double kCloudsRateHz = 30.0;
+constexpr double kFluorescentRateHz = 30.0;  // the 100 Hz ripple aliases to 10 Hz: 3 frames
+constexpr double kExposureJumpRateHz = 30.0;
+constexpr double kHdriRateHz = 30.0;
+
 std::expected<std::unique_ptr<SyntheticScene>, std::string> makeHdriScene(
     std::string_view file, const SceneOptions& options) {
   if (!options.hdri || options.hdri->width <= 0 || options.hdri->height <= 0) {
@@ -34,6 +41,15 @@ std::expected<std::unique_ptr<SyntheticScene>, std::string> makeHdriScene(
 std::optional<std::string_view> hdriFileOf(std::string_view spec) {
   if (!spec.starts_with(kHdriPrefix) || spec.size() == kHdriPrefix.size()) return std::nullopt;
   return spec.substr(kHdriPrefix.size());
+}
+
+std::optional<double> naturalRateHz(std::string_view spec) {
+  if (spec == "sky") return kSkyRateHz;
+  if (spec == "clouds") return kCloudsRateHz;
+  if (spec == "fluorescent") return kFluorescentRateHz;
+  if (spec == "exposure-jump") return kExposureJumpRateHz;
+  if (hdriFileOf(spec)) return kHdriRateHz;
+  return std::nullopt;
 }
 
 std::expected<std::unique_ptr<SyntheticScene>, std::string> makeScene(std::string_view spec,

@@ -29,6 +29,14 @@ struct SceneOptions {
   std::uint64_t seed = 1;              // clouds: the noise field
 };
 
+// The rate in frames per second a scene was designed to be captured at, used when no rate is
+// given (`vemtool synth` without --rate). It is 30 for every scene today, the rate vemd's synthetic
+// source runs at: the sky's sun moves 1/30 degree per frame, the clouds 1/120 layer height, the
+// hdri pans 1/3 degree, the exposure jump falls between frames 29 and 30, and the fluorescent
+// room's 100 Hz ripple aliases to 10 Hz, a period of exactly 3 frames (at another rate the flicker
+// the lights show is another one; fluorescent_scene.h). nullopt for a spec naming no scene.
+[[nodiscard]] std::optional<double> naturalRateHz(std::string_view spec);
+
 // FILE for a spec "hdri:FILE", else nullopt (also for "hdri:" with no file).
 [[nodiscard]] std::optional<std::string_view> hdriFileOf(std::string_view spec);
 

@@ -119,13 +119,50 @@ TEST_F(VemtoolSubscribeCli, ExitsWithTheSentenceWhenTheDaemonSpeaksMajor2) {
   EXPECT_TRUE(r.out.empty());
 }
 
-TEST_F(VemtoolSubscribeCli, TimesOutWithOneSentenceWhenNoDaemonAnswers) {
+// Issue 17: `vemtool subscribe` to a dead port waited for ever (the client retries with backoff).
+// --timeout bounds the wait for the connection and the first frame.
+TEST_F(VemtoolSubscribeCli, GivesUpOnADeadPortAfterTheTimeoutNamingTheUrlInsteadOfWaitingForever) {
   std::uint16_t port = 0;
   { port = TestStreamServer().port(); }  // a port nobody listens on any more
-  const CommandRun r =
-      start("ws://127.0.0.1:" + std::to_string(port) + "/ --frames 1 --timeout 1").get();
+  const std::string url = "ws://127.0.0.1:" + std::to_string(port) + "/";
+  auto run = start(url + " --timeout 0.5");
+  ASSERT_EQ(run.wait_for(60s), std::future_status::ready) << "subscribe did not give up";
+  const CommandRun r = run.get();
   EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("timed out after 1 s with 0 of 1 light frames"), std::string::npos) << r.err;
+  const std::vector<std::string> err = lines(r.err);
+  ASSERT_FALSE(err.empty());
+  EXPECT_TRUE(err.back().starts_with("vemtool: error: could not connect to " + url +
+                                     " within 0.5 s (--timeout)"))
+      << r.err;
+  EXPECT_TRUE(r.out.empty());
+}
+
+TEST_F(VemtoolSubscribeCli, GivesUpWhenConnectedButNoFrameArrivesWithinTheTimeout) {
+  TestStreamServer server(0);  // greets with a Hello, then sends nothing
+  auto run = start(server.url() + " --timeout 0.5");
+  ASSERT_EQ(run.wait_for(60s), std::future_status::ready) << "subscribe did not give up";
+  const CommandRun r = run.get();
+  EXPECT_EQ(r.exitCode, 1);
+  const std::vector<std::string> err = lines(r.err);
+  ASSERT_FALSE(err.empty());
+  // Connected or still connecting when the half second ran out: either sentence names the URL.
+  EXPECT_TRUE(err.back() == "vemtool: error: connected to " + server.url() +
+                                " but no light frame arrived within 0.5 s (--timeout)" ||
+              err.back().starts_with("vemtool: error: could not connect to " + server.url()))
+      << r.err;
+}
+
+TEST_F(VemtoolSubscribeCli, DurationEndsTheRunAndFailsWhenFramesWereMissing) {
+  TestStreamServer server(0);
+  auto run = start(server.url() + " --frames 2 --duration 0.5 --timeout 30");
+  ASSERT_TRUE(server.waitForClientMessages(1, 20s));
+  server.send(bytesOf(test::lightFrameMessage(1, 2)));
+  const CommandRun r = run.get();
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("stopped after 0.5 s (--duration) with 1 of 2 light frames from " +
+                       server.url()),
+            std::string::npos)
+      << r.err;
 }
 
 TEST_F(VemtoolSubscribeCli, RefusesAnAddressThatIsNotAStream) {

@@ -25,6 +25,15 @@ TEST(SceneFactory, EveryDocumentedNameMakesItsScene) {
   }
 }
 
+TEST(SceneFactory, EveryDocumentedNameHasANaturalRateAndFluorescentsIsThe30HzItsAliasingNeeds) {
+  for (const std::string name :
+       {"sky", "clouds", "fluorescent", "exposure-jump", "hdri:some/where/park.exr"}) {
+    EXPECT_EQ(naturalRateHz(name), 30.0) << name;
+  }
+  EXPECT_FALSE(naturalRateHz("skies"));
+  EXPECT_FALSE(naturalRateHz("hdri:"));
+}
+
 TEST(SceneFactory, UnknownNameIsRefusedInOneSentenceListingTheNames) {
   const auto scene = makeScene("skies", {});
   ASSERT_FALSE(scene);

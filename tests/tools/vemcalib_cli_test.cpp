@@ -9,7 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <regex>
+#include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -249,12 +252,12 @@ TEST_F(VemcalibCli, CorruptFrameAndBadExposureGiveOneSentence) {
                 "positive number of microseconds");
 }
 
-TEST_F(VemcalibCli, ShowRefusesABadCameraFileWithTheLoadersSentenceAndExit2) {
+TEST_F(VemcalibCli, ShowRefusesABadCameraFileWithTheLoadersSentenceAndExit1) {
   std::string text = readTextFile(kExampleCamera);
   text.replace(text.find("unit = \"px\" }     # k1"), 13, "unit = \"mm\" }");
   std::ofstream(dir_ / "bad.toml") << text;
   const CommandRun r = run("show " + (dir_ / "bad.toml").string());
-  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.exitCode, 1);  // a file that cannot be used is a failure at run time, not usage
   EXPECT_EQ(lineCount(r.err), 1) << r.err;
   EXPECT_TRUE(contains(r.err, "bad.toml: geometric.k: expected unit \"px\", found \"mm\""))
       << r.err;
@@ -311,19 +314,49 @@ TEST_F(VemcalibCli, ApplyTurnsASimulatedFrameBackIntoTheSkyTheCameraSaw) {
   }
 }
 
+// Issue 17: simulate frame's hint applied the truth camera to "map.exr"; the walk-through applies
+// the camera fitted in the earlier steps (DIR/camera.toml) to the frame just written.
+TEST_F(VemcalibCli, SimulateFrameHintAppliesTheFittedCameraToTheFrameWrittenNotTheTruth) {
+  vem::EnvMap sky = vem::EnvMap::filled(vem::MapLayout::Sphere, 32, 16, glm::vec3(50.0F));
+  ASSERT_TRUE(vem::mapio::saveMap(sky, dir_ / "sky.exr"));
+  fs::create_directories(dir_ / "sim");
+  const std::string simulate = "simulate frame --camera " + kExampleCamera.string() + " --map " +
+                               (dir_ / "sky.exr").string() + " --noise 0 --out " +
+                               (dir_ / "sim" / "raw.png").string();
+  const CommandRun before = run(simulate);  // no camera fitted yet
+  ASSERT_EQ(before.exitCode, 0) << before.err;
+  EXPECT_TRUE(contains(before.out, "next: vemcalib apply --camera CAMERA --frame " +
+                                       (dir_ / "sim" / "raw.png").string() + " --out " +
+                                       (dir_ / "sim" / "polar.exr").string() +
+                                       ", CAMERA being the camera file you fitted (e.g. " +
+                                       (dir_ / "sim" / "camera.toml").string()))
+      << before.out;
+  EXPECT_FALSE(contains(before.out, "--camera " + kExampleCamera.string())) << before.out;
+  EXPECT_FALSE(contains(before.out, "map.exr")) << before.out;
+
+  fs::copy_file(kExampleCamera, dir_ / "sim" / "camera.toml");  // as if fitted
+  const CommandRun after = run(simulate);
+  ASSERT_EQ(after.exitCode, 0) << after.err;
+  EXPECT_TRUE(contains(after.out, "next: vemcalib apply --camera " +
+                                      (dir_ / "sim" / "camera.toml").string() + " --frame " +
+                                      (dir_ / "sim" / "raw.png").string() + " --out " +
+                                      (dir_ / "sim" / "polar.exr").string() + "\n"))
+      << after.out;
+}
+
 TEST_F(VemcalibCli, ApplyRefusesACameraWithoutLensAndAFrameOfAnotherSize) {
   CameraCalibration noLens = *io::loadCameraFile(kExampleCamera);
   noLens.lens.reset();
   ASSERT_TRUE(io::saveCameraFile(noLens, dir_ / "nolens.toml"));
   const CommandRun a = run("apply --camera " + (dir_ / "nolens.toml").string() + " --frame " +
                         sim("patches-1.png").string() + " --out " + (dir_ / "m.exr").string());
-  EXPECT_EQ(a.exitCode, 2);
+  EXPECT_EQ(a.exitCode, 1);
   EXPECT_EQ(lineCount(a.err), 1) << a.err;
   EXPECT_TRUE(contains(a.err, "nolens.toml: the camera has no geometric section")) << a.err;
   ASSERT_TRUE(io::saveRawFrame(RawFrame::blank(64, 48, {3, 12}), dir_ / "small.png"));
   const CommandRun b = run("apply --camera " + kExampleCamera.string() + " --frame " +
                         (dir_ / "small.png").string() + " --out " + (dir_ / "m.exr").string());
-  EXPECT_EQ(b.exitCode, 2);
+  EXPECT_EQ(b.exitCode, 1);
   EXPECT_EQ(lineCount(b.err), 1) << b.err;
   EXPECT_TRUE(contains(b.err, "small.png: the frames are 64 x 48 RGB12 but the camera")) << b.err;
   EXPECT_FALSE(fs::exists(dir_ / "m.exr"));
@@ -336,6 +369,127 @@ TEST_F(VemcalibCli, HelpOfTheToolAndOfEveryCommandShowsAnExample) {
     const CommandRun r = run(std::string(command) + " --help");
     EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.out, "Example")) << "vemcalib " << command << " --help:\n" << r.out;
+  }
+}
+
+// Issue 17: one exit convention for every tool (util/cli_conventions.h). vemcalib exited 105/106
+// on a bad flag or value and 2 on an input file it could not use.
+TEST_F(VemcalibCli, BadFlagAndBadValueExitTwoNotCli11sOwnCodes) {
+  for (const std::string args :
+       {"show --frobnicate", "fisheye --image x.png --board 9x6 --square many --out c.toml",
+        "simulate frame --camera c.toml --map m.exr --noise -1 --out r.png", "frobnicate"}) {
+    const CommandRun r = run(args);
+    EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
+    EXPECT_TRUE(r.err.starts_with("vemcalib: error: ")) << r.err;
+    EXPECT_TRUE(contains(r.err, " --help')")) << r.err;
+  }
+}
+
+TEST_F(VemcalibCli, MissingInputFileIsAFailureAtRunTimeExitOneNotTwo) {
+  const CommandRun r = run("show " + (dir_ / "nothere.toml").string());
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "nothere.toml")) << r.err;
+}
+
+TEST_F(VemcalibCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
+  for (const char* command :
+       {"", "photometric", "fisheye", "response", "simulate", "apply", "show", "simulate patches",
+        "simulate frame", "simulate boards", "simulate brackets"}) {
+    const CommandRun r = run(std::string(command) + " --help");
+    EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
+    const std::string page = r.out.substr(0, r.out.find_last_not_of('\n') + 1);
+    EXPECT_TRUE(page.ends_with(
+        "\nExit status: 0 success, 1 failure at run time, 2 usage error (bad flag or value)."))
+        << "vemcalib " << command << " --help:\n" << r.out;
+  }
+}
+
+// Issue 17: help pages showed the parser's internals ("INT:INT in [1 - 65536]", "TEXT:FILE",
+// "FLOAT:POSITIVE", enum maps "{a->0} OR {0}", "{false}").
+TEST_F(VemcalibCli, NoHelpPageShowsTheParsersInternals) {
+  const std::regex typeAndValidator{R"(\b(TEXT|INT|UINT|FLOAT|BOOLEAN):)"};
+  for (const char* command :
+       {"", "photometric", "fisheye", "response", "simulate", "apply", "show", "simulate patches",
+        "simulate frame", "simulate boards", "simulate brackets"}) {
+    const CommandRun r = run(std::string(command) + " --help");
+    ASSERT_EQ(r.exitCode, 0) << command << ": " << r.err;
+    for (const char* internal : {"->", "ENUM", "{false}", " OR {", " in [", "POSITIVE"})
+      EXPECT_EQ(r.out.find(internal), std::string::npos)
+          << "vemcalib " << command << " --help shows " << internal << ":\n" << r.out;
+    EXPECT_FALSE(std::regex_search(r.out, typeAndValidator)) << "vemcalib " << command << ":\n" << r.out;
+  }
+}
+
+// Issue 17: `vemcalib show --compare TRUTH.toml`, each fitted value beside the truth and how far
+// apart they are in pixels, degrees and per cent of luminance.
+class VemcalibCompare : public VemcalibCli {
+ protected:
+  // The number before `unit` on the table line that starts with `name` (NaN when none).
+  static double differenceOn(const std::string& out, const std::string& name,
+                             const std::string& unit) {
+    std::istringstream lines(out);
+    for (std::string line; std::getline(lines, line);) {
+      const std::size_t at = line.find("  " + name);
+      if (at != 0) continue;
+      const std::size_t end = line.rfind(unit);
+      const std::size_t begin = line.rfind(' ', end - 1);
+      return std::stod(line.substr(begin + 1, end - begin - 1));
+    }
+    return std::nan("");
+  }
+  CommandRun compare(const CameraCalibration& fitted) const {
+    EXPECT_TRUE(io::saveCameraFile(fitted, dir_ / "fitted.toml"));
+    return run("show " + (dir_ / "fitted.toml").string() + " --compare " + kExampleCamera.string());
+  }
+};
+
+TEST_F(VemcalibCompare, AFileComparedWithItselfDiffersByNothing) {
+  const CommandRun r = run("show " + kExampleCamera.string() + " --compare " + kExampleCamera.string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(differenceOn(r.out, "luminance, max", " %"), 0.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "luminance, rms", " %"), 0.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "projection, max", " px"), 0.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "direction, max", " deg"), 0.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "principal point x", " px"), 0.0) << r.out;
+}
+
+TEST_F(VemcalibCompare, APrincipalPointShiftedBy2PxShows2PxAndAboutAThirdOfADegree) {
+  CameraCalibration fitted = *io::loadCameraFile(kExampleCamera);
+  fitted.lens->principalPointPx.x += 2.0;
+  const CommandRun r = compare(fitted);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NEAR(differenceOn(r.out, "principal point x", " px"), 2.0, 1e-9) << r.out;
+  EXPECT_NEAR(differenceOn(r.out, "projection, max", " px"), 2.0, 1e-3) << r.out;
+  EXPECT_NEAR(differenceOn(r.out, "projection, rms", " px"), 2.0, 1e-3) << r.out;
+  // 2 px over r'(0) = k1 = 310 px per radian near the axis: 0.37 deg; more where r' is smaller.
+  EXPECT_GT(differenceOn(r.out, "direction, max", " deg"), 0.3) << r.out;
+  EXPECT_LT(differenceOn(r.out, "direction, max", " deg"), 1.0) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "luminance, max", " %"), 0.0) << r.out;
+}
+
+TEST_F(VemcalibCompare, AResponseReading10PercentMoreLuminanceShows10Percent) {
+  CameraCalibration fitted = *io::loadCameraFile(kExampleCamera);
+  auto& log = std::get<LogResponse>(fitted.photometric->response);
+  for (int c = 0; c < 3; ++c) log.aCode[c] -= log.bCodePerLn[c] * std::log(1.1);  // L' = 1.1 L
+  const CommandRun r = compare(fitted);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NEAR(differenceOn(r.out, "luminance, max", " %"), 10.0, 0.01) << r.out;
+  EXPECT_NEAR(differenceOn(r.out, "luminance, rms", " %"), 10.0, 0.01) << r.out;
+  EXPECT_EQ(differenceOn(r.out, "projection, max", " px"), 0.0) << r.out;
+}
+
+TEST_F(VemcalibCompare, AMissingOrBrokenTruthFileIsOneSentenceNamingItAndExit1) {
+  std::ofstream(dir_ / "broken.toml") << "this is [not a camera file\n";
+  for (const std::string truth : {"nothere.toml", "broken.toml"}) {
+    const CommandRun r =
+        run("show " + kExampleCamera.string() + " --compare " + (dir_ / truth).string());
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << r.err;
+    EXPECT_TRUE(r.err.starts_with("vemcalib: error: --compare: ")) << r.err;
+    EXPECT_TRUE(contains(r.err, truth)) << r.err;
+    EXPECT_EQ(r.out, "");
   }
 }
 

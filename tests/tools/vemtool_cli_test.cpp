@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -127,6 +128,62 @@ TEST_F(VemtoolCli, ClusterAddsMembersThatCoverEveryLightOnce) {
     for (const auto& id : cluster["members"]) ++seen[std::size_t(id.get<int>())];
   for (int count : seen) EXPECT_EQ(count, 1);
   EXPECT_LT(frame["count"].get<int>(), 64);
+}
+
+// Issue 17: one exit convention for every tool (util/cli_conventions.h): vemtool exited 105 on
+// an unknown flag and 106 on a bad value, CLI11's own codes.
+TEST_F(VemtoolCli, BadFlagAndBadValueExitTwoNotCli11s105Or106) {
+  vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 8, 4, glm::vec3(1.0F));
+  ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "small.pfm"));
+  const std::string in = " --in " + (dir_ / "small.pfm").string();
+  for (const std::string& args : std::vector<std::string>{
+           "lights" + in + " --count 4 --bogus", "lights" + in + " --count many",
+        "lights" + in + " --count 4 --sampler fancy", "info x.vem --format yaml",
+        "synth --scene sky --frames 0 --out x.vem", "frobnicate"}) {
+    const CommandRun r = run(args);
+    EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
+    EXPECT_TRUE(r.err.starts_with("vemtool: error: ")) << r.err;
+  }
+}
+
+TEST_F(VemtoolCli, MissingInputFileIsAFailureAtRunTimeExitOne) {
+  for (const std::string& args : std::vector<std::string>{
+           "info " + (dir_ / "nothere.vem").string(),
+                                  "export " + (dir_ / "nothere.vem").string() + " --frame 0 --out x.exr",
+                                  "recover " + (dir_ / "nothere.vem").string()}) {
+    const CommandRun r = run(args);
+    EXPECT_EQ(r.exitCode, 1) << args << ": " << r.err;
+    EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("nothere.vem"), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(VemtoolCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
+  for (const char* command :
+       {"", "lights", "filters", "info", "recover", "synth", "export", "import", "subscribe"}) {
+    const CommandRun r = run(std::string(command) + " --help");
+    EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
+    const std::string page = r.out.substr(0, r.out.find_last_not_of('\n') + 1);
+    EXPECT_TRUE(page.ends_with(
+        "\nExit status: 0 success, 1 failure at run time, 2 usage error (bad flag or value)."))
+        << "vemtool " << command << " --help:\n" << r.out;
+  }
+}
+
+// Issue 17: help pages showed the parser's internals ("INT:INT in [1 - 65536]", "TEXT:FILE",
+// "FLOAT:POSITIVE", enum maps "{a->0} OR {0}", "{false}").
+TEST_F(VemtoolCli, NoHelpPageShowsTheParsersInternals) {
+  const std::regex typeAndValidator{R"(\b(TEXT|INT|UINT|FLOAT|BOOLEAN):)"};
+  for (const char* command :
+       {"", "lights", "filters", "info", "recover", "synth", "export", "import", "subscribe"}) {
+    const CommandRun r = run(std::string(command) + " --help");
+    ASSERT_EQ(r.exitCode, 0) << command << ": " << r.err;
+    for (const char* internal : {"->", "ENUM", "{false}", " OR {", " in [", "POSITIVE"})
+      EXPECT_EQ(r.out.find(internal), std::string::npos)
+          << "vemtool " << command << " --help shows " << internal << ":\n" << r.out;
+    EXPECT_FALSE(std::regex_search(r.out, typeAndValidator)) << "vemtool " << command << ":\n" << r.out;
+  }
 }
 
 }  // namespace

@@ -71,6 +71,21 @@ TEST_F(VemtoolRecordingCli, InfoTextNamesFramesDamageAndIndex) {
   EXPECT_NE(r.out.find("index:       valid (5 entries)\n"), std::string::npos) << r.out;
 }
 
+// Issue 17: info printed "created 1760000000000000000 ns after 1970"; a person reads a date.
+TEST_F(VemtoolRecordingCli, InfoShowsTheCreationDateInIso8601UtcNotNanosecondsAfter1970) {
+  const fs::path path = dir_ / "a.vem";
+  vem::testing::writeSmallRecording(path, 2);  // created 1.76e18 ns after 1970
+  const CommandRun text = run("info " + path.string());
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find(", created 2025-10-09T08:53:20.000Z\n"), std::string::npos) << text.out;
+  EXPECT_EQ(text.out.find("ns after 1970"), std::string::npos) << text.out;
+  const CommandRun json = run("info " + path.string() + " --format json");
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["created_unix_ns"], 1'760'000'000'000'000'000);
+  EXPECT_EQ(j["created_utc"], "2025-10-09T08:53:20.000Z");
+}
+
 TEST_F(VemtoolRecordingCli, RecoverRestoresTheIndexThatInfoReportsMissing) {
   const fs::path path = dir_ / "a.vem";
   vem::testing::writeSmallRecording(path, 10);

@@ -138,6 +138,22 @@ TEST_F(VemtoolSynthCli, ExportedFrameIsAMapWhoseStrongestLightIsTheSun) {
             1.0);
 }
 
+// Issue 17: `vemtool synth --scene clouds --frames 300 --out runs/clouds.vem` failed with
+// "--rate is required"; without --rate the recording runs at the scene's natural rate.
+TEST_F(VemtoolSynthCli, SynthWithoutRateRecordsAtTheScenesNaturalRate) {
+  const CommandRun r = run("synth --scene clouds --frames 2 --out " + path("clouds.vem"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("2 frames of scene clouds at 30 Hz"), std::string::npos) << r.out;
+  const CommandRun i = run("info " + path("clouds.vem") + " --format json");
+  ASSERT_EQ(i.exitCode, 0) << i.err;
+  const auto j = nlohmann::json::parse(i.out);
+  EXPECT_EQ(j["nominal_rate_hz"], 30.0);
+  EXPECT_EQ(j["last_ts_ns"], 33'333'333);  // 1e9 / 30, rounded
+  const CommandRun help = run("synth --help");
+  EXPECT_NE(help.out.find("default: the scene's natural rate, 30 Hz"), std::string::npos)
+      << help.out;
+}
+
 TEST_F(VemtoolSynthCli, ExportRawWritesTheRecordedCodesBitForBit) {
   ASSERT_EQ(
       run("synth --scene fluorescent --frames 2 --rate 30 --noise 2 --out " + path("room.vem"))

@@ -17,6 +17,7 @@
 #include "calib/io/camera_file.h"
 #include "calib/io/raw_frame_file.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "mapio/map_file.h"
 #include "recording/recording_reader.h"
 
@@ -152,7 +153,8 @@ void addExportCommand(CLI::App& app, int& exitCode) {
       ->required();
   cmd->add_flag("--raw", o->raw, "Write the raw sensor codes instead of a map");
   cmd->add_option("--width", o->width, "Map width in pixels (default 1024)")
-      ->check(CLI::Range(4, mapio::kMaxMapWidth));
+      ->type_name(help::rangeName(4, mapio::kMaxMapWidth))
+      ->check(help::quiet(CLI::Range(4, mapio::kMaxMapWidth)));
   const std::map<std::string, MapLayout> layouts{{"sphere", MapLayout::Sphere},
                                                  {"hemisphere", MapLayout::Hemisphere}};
   cmd->add_option("--layout", o->layout, "hemisphere (default: the camera's polar map) | sphere")

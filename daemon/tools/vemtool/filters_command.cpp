@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "plain_help.h"
 #include "core/fir_design.h"
 
 namespace vem::tool {
@@ -88,7 +89,7 @@ void addFiltersCommand(CLI::App& app, int& exitCode) {
       "The presets' taps are fixed in frames: their Hz figures scale with the rate.");
   LowPassSpec& spec = options->spec;
   cmd->add_option("--rate", spec.edges.rateHz, "Capture rate in Hz (default 21, the paper's)")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--pass", spec.edges.passHz,
                   "Pass-band edge in Hz for the design and the gains (7)");
   cmd->add_option("--stop", spec.edges.stopHz, "Stop-band edge in Hz, below rate / 2 (9)");

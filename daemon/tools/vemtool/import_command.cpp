@@ -22,6 +22,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "commands.h"
+#include "plain_help.h"
 #include "mapio/map_file.h"
 #include "synth/synthetic_camera.h"
 #include "synthetic_recording.h"
@@ -206,19 +207,20 @@ void addImportCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--in", o->inputs, "Maps, videos or quoted glob patterns, in order")
       ->required()
       ->expected(1, -1);
-  cmd->add_option("--rate", o->rateHz, "Frames per second")->required()->check(CLI::PositiveNumber);
+  cmd->add_option("--rate", o->rateHz, "Frames per second")->required()->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--out", o->out, "The recording to write (.vem)")->required();
   cmd->add_option(
       "--camera", o->camera,
       "Camera file to render through (default: the built-in config/camera-example.toml)");
   cmd->add_option("--scale", o->scale, "Input values times this are cd/m2 (default 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--noise", o->noiseCode, "Gaussian read noise in codes (default 0: exact codes)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(help::quiet(CLI::NonNegativeNumber));
   cmd->add_option("--seed", o->seed, "Seed of the noise (default 1)");
   cmd->add_option("--samples", o->samples,
                   "Samples per pixel and axis (default 1: each pixel's centre)")
-      ->check(CLI::Range(1, 8));
+      ->type_name(help::rangeName(1, 8))
+      ->check(help::quiet(CLI::Range(1, 8)));
   cmd->add_flag("--overwrite", o->overwrite, "Replace an existing --out");
   cmd->callback([o, &exitCode] { exitCode = runImport(*o); });
 }

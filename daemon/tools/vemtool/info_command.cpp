@@ -1,11 +1,13 @@
 // `vemtool info F.vem`: what a VEM recording holds (docs/vem-format.md): its header, frame count,
 // time span and rate, sequence and timestamp gaps, damaged records and the state of its index.
+#include <chrono>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
 
+#include <fmt/chrono.h>
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
@@ -22,6 +24,14 @@ struct InfoOptions {
   std::string input;
   bool json = false;
 };
+
+// ISO 8601 UTC to the millisecond, "2026-12-03T14:30:36.123Z", through fmt's chrono support (its
+// time points print whole seconds; the seconds of the minute print as a duration with the ms).
+std::string isoUtcMs(std::int64_t unixNs) {
+  using namespace std::chrono;
+  const auto ms = floor<milliseconds>(sys_time<nanoseconds>(nanoseconds(unixNs)));
+  return fmt::format("{:%Y-%m-%dT%H:%M:}{:%S}Z", floor<seconds>(ms), ms - floor<minutes>(ms));
+}
 
 // "seq goes back from 10 to 5 at frame 7 of 90 (byte 123456)" and the like.
 std::string disorderText(const recording::SequenceDisorder& d, std::uint64_t frames) {
@@ -56,6 +66,7 @@ nlohmann::ordered_json summaryJson(const std::string& file, const recording::Rec
   j["nominal_rate_hz"] = h.nominalRateHz;
   j["calibration_toml_bytes"] = h.calibrationToml.size();
   j["created_unix_ns"] = h.createdUnixNs;
+  j["created_utc"] = isoUtcMs(h.createdUnixNs);
   j["writer"] = {{"name", h.writerName}, {"version", h.writerVersion}};
   j["frames"] = s.frames;
   j["frames_with_lights"] = s.framesWithLights;
@@ -92,8 +103,8 @@ std::string summaryText(const std::string& file, const recording::RecordingSumma
                    h.calibrationToml.empty()
                        ? std::string("none")
                        : fmt::format("{} bytes of TOML", h.calibrationToml.size()));
-  t += fmt::format("writer:      {} {}, created {} ns after 1970 (UTC)\n", printable(h.writerName),
-                   printable(h.writerVersion), h.createdUnixNs);
+  t += fmt::format("writer:      {} {}, created {}\n", printable(h.writerName),
+                   printable(h.writerVersion), isoUtcMs(h.createdUnixNs));
   t += fmt::format("frames:      {}", s.frames);
   if (s.firstSeq) t += fmt::format(" (seq {} .. {})", *s.firstSeq, *s.lastSeq);
   t += fmt::format(", {} with lights\n", s.framesWithLights);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "plain_help.h"
 #include "core/default_pattern.h"
 #include "core/light_generator.h"
 #include "core/sampling_tables.h"
@@ -62,9 +63,11 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
       "(radiance x sr); the first k lights of an N-light set are the k-light set.");
   cmd->add_option("--in", options->input, "Map file: equirectangular (W = 2H) or polar (W = 4H)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->type_name("FILE")
+      ->check(help::quiet(CLI::ExistingFile));
   cmd->add_option("--count", options->count, "Number of lights N")
-      ->check(CLI::Range(std::size_t(1), kMaxLights));
+      ->type_name(help::rangeName(std::size_t(1), kMaxLights))
+      ->check(help::quiet(CLI::Range(std::size_t(1), kMaxLights)));
   const std::map<std::string, MapLayout> layouts{{"sphere", MapLayout::Sphere},
                                                  {"hemisphere", MapLayout::Hemisphere}};
   cmd->add_option("--layout", options->layout,
@@ -76,7 +79,8 @@ void addLightsCommand(CLI::App& app, int& exitCode) {
       ->transform(CLI::CheckedTransformer(samplers, CLI::ignore_case));
   cmd->add_option("--cluster", options->clusterQ,
                   "Cluster the lights toward about Q clusters over the map (paper 004, 4.3)")
-      ->check(CLI::Range(1, int(kMaxLights)));
+      ->type_name(help::rangeName(1, int(kMaxLights)))
+      ->check(help::quiet(CLI::Range(1, int(kMaxLights))));
   std::string format = "jsonl";
   cmd->add_option_function<std::string>(
          "--format", [options](const std::string& f) { options->prettyJson = f == "json"; },

@@ -1,12 +1,40 @@
 // vemtool: lights from map files, and the tools around them. A thin shell over the core library:
 // each subcommand (see commands.h) reads its input, calls the core, prints the result.
 #include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "util/cli_conventions.h"
+
+namespace {
+
+// Every help page ends with the exit statuses: applyConventions() (util/cli_conventions.h) puts
+// its line above a command's own footer (the examples), so the own footers are taken off before it
+// runs and put back above the line after. Belongs in the helper (issue 17 report); until then
+// vemtool and vemcalib each do this.
+std::vector<std::pair<CLI::App*, std::string>> takeFooters(CLI::App& app) {
+  std::vector<std::pair<CLI::App*, std::string>> footers{{&app, app.get_footer()}};
+  app.footer("");
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    for (auto& footer : takeFooters(*sub)) footers.push_back(std::move(footer));
+  }
+  return footers;
+}
+
+void putFootersAboveTheExitStatus(const std::vector<std::pair<CLI::App*, std::string>>& footers) {
+  for (const auto& [app, own] : footers) {
+    if (own.empty()) continue;
+    app->footer([own] { return own + "\n\n" + std::string(vem::cli::kExitStatusHelp); });
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // Diagnostics go to stderr, one line each; stdout carries only results (JSON).
@@ -16,12 +44,7 @@ int main(int argc, char** argv) {
 
   CLI::App app{"vemtool: directional lights from HDR environment maps, and tools (vemcast)"};
   app.require_subcommand(1);
-  app.failure_message([](const CLI::App* failed, const CLI::Error& e) {
-    const std::string help =
-        failed->get_parent() != nullptr ? "vemtool " + failed->get_name() : "vemtool";
-    return "vemtool: error: " + std::string(e.what()) + " (see '" + help + " --help')\n";
-  });
-  int exitCode = EXIT_SUCCESS;
+  int exitCode = vem::cli::kExitSuccess;
   vem::tool::addLightsCommand(app, exitCode);
   vem::tool::addFiltersCommand(app, exitCode);
   vem::tool::addInfoCommand(app, exitCode);
@@ -30,10 +53,13 @@ int main(int argc, char** argv) {
   vem::tool::addExportCommand(app, exitCode);
   vem::tool::addImportCommand(app, exitCode);
   vem::tool::addSubscribeCommand(app, exitCode);
+  const auto footers = takeFooters(app);
+  vem::cli::applyConventions(app, "vemtool");
+  putFootersAboveTheExitStatus(footers);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return vem::cli::exitStatusFor(app, e);
   }
   return exitCode;
 }

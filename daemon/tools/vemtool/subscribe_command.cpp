@@ -1,6 +1,7 @@
 // `vemtool subscribe ws://HOST:PORT`: receives a vemd stream (client/stream_client.h) and prints
 // each light frame as one JSON line (the `vemtool lights` light objects), each cube map as one
 // line, and the reception statistics as a final JSON line on stderr.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -21,6 +22,7 @@
 
 #include "client/stream_client.h"
 #include "commands.h"
+#include "plain_help.h"
 #include "light_json.h"
 #include "proto/stream_protocol.h"
 
@@ -37,8 +39,9 @@ struct SubscribeOptions {
   double cubemapRateHz = 1.0;
   std::uint32_t cubemapFacePx = 64;
   std::uint32_t cubemapLevels = 1;
-  std::uint64_t frames = 0;  // 0: until interrupted or the timeout
-  double timeoutS = 0.0;     // 0: none
+  std::uint64_t frames = 0;  // 0: until interrupted or the duration
+  double timeoutS = 10.0;    // to connect and receive the first frame; 0: wait for ever
+  double durationS = 0.0;    // 0: none
   std::string caFile;
 };
 
@@ -99,16 +102,23 @@ class FramePrinter {
   }
   void cubemap(const client::EnvironmentFrame& frame) { print(cubemapJson(frame), countCubemaps_); }
 
-  // Waits for the wanted frames, the client's refusal, an interrupt or the deadline.
-  bool waitDone(const client::StreamClient& client,
-                std::chrono::steady_clock::time_point deadline) {
+  enum class Outcome { Done, Stopped, NoFirstFrame, DurationOver };
+
+  // Waits for the wanted frames (Done), the client's refusal or an interrupt (Stopped), no frame at
+  // all by firstDeadline (NoFirstFrame) or the end of the run (DurationOver).
+  Outcome waitDone(const client::StreamClient& client,
+                   std::chrono::steady_clock::time_point firstDeadline,
+                   std::chrono::steady_clock::time_point deadline) {
     std::unique_lock lock(mutex_);
     while (!(wanted_ > 0 && printed_ >= wanted_)) {
-      if (interrupted || client.state() == client::ConnectionState::Refused) return false;
-      if (std::chrono::steady_clock::now() >= deadline) return false;
-      done_.wait_for(lock, 100ms);
+      if (interrupted || client.state() == client::ConnectionState::Refused) return Outcome::Stopped;
+      const auto now = std::chrono::steady_clock::now();
+      if (lines_ == 0 && now >= firstDeadline) return Outcome::NoFirstFrame;
+      if (now >= deadline) return Outcome::DurationOver;
+      // Polled too: the client's state and a signal do not notify this condition.
+      done_.wait_until(lock, std::min({now + 100ms, lines_ == 0 ? firstDeadline : deadline, deadline}));
     }
-    return true;
+    return Outcome::Done;
   }
   std::uint64_t printed() const {
     std::lock_guard lock(mutex_);
@@ -120,6 +130,7 @@ class FramePrinter {
     std::lock_guard lock(mutex_);
     if (wanted_ > 0 && printed_ >= wanted_) return;  // exactly N lines of what was counted
     std::cout << line.dump() << '\n' << std::flush;
+    if (++lines_ == 1) done_.notify_all();
     if (counts && ++printed_ == wanted_) done_.notify_all();
   }
 
@@ -127,8 +138,29 @@ class FramePrinter {
   bool countCubemaps_;
   mutable std::mutex mutex_;
   std::condition_variable done_;
-  std::uint64_t printed_ = 0;
+  std::uint64_t printed_ = 0;  // of what --frames counts
+  std::uint64_t lines_ = 0;    // light frames and cube maps
 };
+
+// Seconds from now as a deadline; 0 (none) as the farthest time point.
+std::chrono::steady_clock::time_point deadlineIn(double seconds) {
+  if (!(seconds > 0.0)) return std::chrono::steady_clock::time_point::max();
+  return std::chrono::steady_clock::now() +
+         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+             std::chrono::duration<double>(seconds));
+}
+
+// The sentence for no frame within --timeout: what did not happen, at which address.
+std::string noFirstFrameSentence(const SubscribeOptions& o, client::ConnectionState state,
+                                 const std::string& reason, bool lights) {
+  const std::string last = reason.empty() ? "" : " (last attempt: " + reason + ")";
+  if (state == client::ConnectionState::Connected) {
+    return fmt::format("connected to {} but no {} arrived within {:g} s (--timeout)", o.url,
+                       lights ? "light frame" : "cube map", o.timeoutS);
+  }
+  return fmt::format("could not connect to {} within {:g} s (--timeout){}", o.url, o.timeoutS,
+                     last);
+}
 
 int runSubscribe(SubscribeOptions o) {
   if (!readToken(o)) return EXIT_FAILURE;
@@ -153,21 +185,22 @@ int runSubscribe(SubscribeOptions o) {
   }
   std::signal(SIGINT, [](int) { interrupted = true; });
   std::signal(SIGTERM, [](int) { interrupted = true; });
-  const auto deadline = o.timeoutS > 0.0
-                            ? std::chrono::steady_clock::now() +
-                                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(o.timeoutS))
-                            : std::chrono::steady_clock::time_point::max();
-  const bool done = printer.waitDone(**client, deadline);
+  using Outcome = FramePrinter::Outcome;
+  const Outcome outcome =
+      printer.waitDone(**client, deadlineIn(o.timeoutS), deadlineIn(o.durationS));
   const client::ConnectionState state = (*client)->state();
   const std::string reason = (*client)->stateReason();
   (*client)->stop();
   std::cerr << statsJson((*client)->stats()).dump() << '\n';
-  if (done || interrupted) return EXIT_SUCCESS;
+  if (outcome == Outcome::Done || interrupted) return EXIT_SUCCESS;
   if (state == client::ConnectionState::Refused) return EXIT_FAILURE;  // the client logged why
-  if (o.frames == 0) return EXIT_SUCCESS;  // --timeout alone: ran for that long
-  spdlog::error("timed out after {} s with {} of {} {} from {}{}", o.timeoutS, printer.printed(),
-                o.frames, lights ? "light frames" : "cube maps", o.url,
+  if (outcome == Outcome::NoFirstFrame) {
+    spdlog::error("{}", noFirstFrameSentence(o, state, reason, lights));
+    return EXIT_FAILURE;
+  }
+  if (o.frames == 0) return EXIT_SUCCESS;  // --duration alone: ran for that long
+  spdlog::error("stopped after {:g} s (--duration) with {} of {} {} from {}{}", o.durationS,
+                printer.printed(), o.frames, lights ? "light frames" : "cube maps", o.url,
                 reason.empty() ? "" : " (last: " + reason + ")");
   return EXIT_FAILURE;
 }
@@ -185,31 +218,43 @@ void addSubscribeCommand(CLI::App& app, int& exitCode) {
       "\"lights\":[{\"id\":K,\"dir\":[x,y,z],\"rgb\":[r,g,b]},...]}\n"
       "one line per cube map, {\"cubemap\":{\"seq\":S,\"face_px\":F,\"levels\":L,\"bytes\":B}},\n"
       "and on exit the statistics on stderr: {\"received\":..,\"skipped\":..,...}.\n"
-      "Exits 0 after N frames (light frames, or cube maps with --what cubemap), 1 on a timeout\n"
-      "or when the daemon refuses the client.");
+      "Exits 0 after N frames (light frames, or cube maps with --what cubemap) or at the end of\n"
+      "--duration without --frames; 1 when no frame arrived within --timeout (no daemon at the\n"
+      "address: the client retries until then), when --duration ends before N frames, or when\n"
+      "the daemon refuses the client.");
   cmd->add_option("url", options->url, "ws://HOST:PORT[/PATH] or wss://...")->required();
   auto* token = cmd->add_option("--token", options->token, "The daemon's bearer token");
   cmd->add_option("--token-file", options->tokenFile, "A file whose first line is the token")
-      ->check(CLI::ExistingFile)
+      ->type_name("FILE")
+      ->check(help::quiet(CLI::ExistingFile))
       ->excludes(token);
   cmd->add_option("--what", options->what, "lights, cubemap or lights,cubemap (default: lights)")
       ->delimiter(',')
       ->check(CLI::IsMember({"lights", "cubemap"}));
   cmd->add_option("--cubemap-rate", options->cubemapRateHz, "Cube maps per second (default 1)")
-      ->check(CLI::Range(0.01, stream::kMaxCubemapRateHz));
+      ->type_name(help::rangeName(0.01, stream::kMaxCubemapRateHz))
+      ->check(help::quiet(CLI::Range(0.01, stream::kMaxCubemapRateHz)));
   cmd->add_option("--cubemap-face", options->cubemapFacePx,
                   "Cube face size in texels (default 64; without the token at most the daemon's "
                   "[stream] cubemap_max_face_px)")
-      ->check(CLI::Range(stream::kMinCubeFacePx, stream::kMaxCubeFacePx));
+      ->type_name(help::rangeName(stream::kMinCubeFacePx, stream::kMaxCubeFacePx))
+      ->check(help::quiet(CLI::Range(stream::kMinCubeFacePx, stream::kMaxCubeFacePx)));
   cmd->add_option("--cubemap-levels", options->cubemapLevels,
                   "Cube-map levels: 1 (default) for none below the face size, up to 8")
-      ->check(CLI::Range(1, stream::kMaxCubeLevels));
+      ->type_name(help::rangeName(1, stream::kMaxCubeLevels))
+      ->check(help::quiet(CLI::Range(1, stream::kMaxCubeLevels)));
   cmd->add_option("--frames", options->frames, "Exit after N frames (default: never)");
   cmd->add_option("--timeout", options->timeoutS,
-                  "Give up after S seconds (exit 1 when --frames were not all received)")
-      ->check(CLI::PositiveNumber);
+                  "Seconds to connect and receive the first frame, then exit 1 (0: wait for ever)")
+      ->option_text("SECONDS (default: 10)")
+      ->check(help::quiet(CLI::NonNegativeNumber));
+  cmd->add_option("--duration", options->durationS,
+                  "Stop after S seconds (exit 1 when --frames were not all received)")
+      ->option_text("SECONDS")
+      ->check(help::quiet(CLI::PositiveNumber));
   cmd->add_option("--ca-file", options->caFile, "wss: trust the CA certificates of this PEM file")
-      ->check(CLI::ExistingFile);
+      ->type_name("FILE")
+      ->check(help::quiet(CLI::ExistingFile));
   cmd->callback([options, &exitCode] { exitCode = runSubscribe(*options); });
 }
 
