@@ -16,7 +16,7 @@
 #include "calibration_summary.h"
 #include "camera_output.h"
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 #include "frame_arguments.h"
 
 namespace vem::calibtool {

@@ -19,7 +19,7 @@
 #include "calib/io/camera_file.h"
 #include "camera_output.h"
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 #include "frame_arguments.h"
 #include "mapio/map_file.h"
 

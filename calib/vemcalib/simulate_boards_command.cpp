@@ -21,7 +21,7 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 
 namespace vem::calibtool {
 namespace {

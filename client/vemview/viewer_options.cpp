@@ -172,12 +172,12 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
   addLightingOptions(app, o);
   addCameraOptions(app, o);
   plainValueNames(app);
-  cli::applyConventions(app, "vemview");  // plain help, the exit statuses, one error line
-  app.footer(  // after the exit statuses the conventions' footer callback prints
+  app.footer(  // the conventions put the exit statuses below it
       "Examples:\n"
-      "  vemview --map ../shared/data/hdri/park.exr                       # a window\n"
+      "  vemview --map ../shared/data/hdri/esplanade.exr                  # a window\n"
       "  vemview --headless --lights out/lights.jsonl --frames 1 --out out/render\n"
       "  vemview --connect ws://127.0.0.1:8765 --scene model.gltf --count 512 --shadowed 128");
+  cli::applyConventions(app, "vemview");  // plain help, the exit statuses, one error line
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

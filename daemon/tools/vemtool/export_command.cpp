@@ -17,7 +17,7 @@
 #include "calib/io/camera_file.h"
 #include "calib/io/raw_frame_file.h"
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 #include "mapio/map_file.h"
 #include "recording/recording_reader.h"
 

@@ -11,7 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 #include "core/fir_design.h"
 
 namespace vem::tool {

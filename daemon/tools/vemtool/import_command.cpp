@@ -22,7 +22,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 #include "mapio/map_file.h"
 #include "synth/synthetic_camera.h"
 #include "synthetic_recording.h"

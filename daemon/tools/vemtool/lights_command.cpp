@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 #include "core/default_pattern.h"
 #include "core/light_generator.h"
 #include "core/sampling_tables.h"

@@ -12,30 +12,6 @@
 #include "commands.h"
 #include "util/cli_conventions.h"
 
-namespace {
-
-// Every help page ends with the exit statuses: applyConventions() (util/cli_conventions.h) puts
-// its line above a command's own footer (the examples), so the own footers are taken off before it
-// runs and put back above the line after. Belongs in the helper (issue 17 report); until then
-// vemtool and vemcalib each do this.
-std::vector<std::pair<CLI::App*, std::string>> takeFooters(CLI::App& app) {
-  std::vector<std::pair<CLI::App*, std::string>> footers{{&app, app.get_footer()}};
-  app.footer("");
-  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
-    for (auto& footer : takeFooters(*sub)) footers.push_back(std::move(footer));
-  }
-  return footers;
-}
-
-void putFootersAboveTheExitStatus(const std::vector<std::pair<CLI::App*, std::string>>& footers) {
-  for (const auto& [app, own] : footers) {
-    if (own.empty()) continue;
-    app->footer([own] { return own + "\n\n" + std::string(vem::cli::kExitStatusHelp); });
-  }
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   // Diagnostics go to stderr, one line each; stdout carries only results (JSON).
   auto logger = spdlog::stderr_color_st("vemtool");
@@ -53,9 +29,7 @@ int main(int argc, char** argv) {
   vem::tool::addExportCommand(app, exitCode);
   vem::tool::addImportCommand(app, exitCode);
   vem::tool::addSubscribeCommand(app, exitCode);
-  const auto footers = takeFooters(app);
   vem::cli::applyConventions(app, "vemtool");
-  putFootersAboveTheExitStatus(footers);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

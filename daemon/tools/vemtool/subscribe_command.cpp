@@ -22,7 +22,7 @@
 
 #include "client/stream_client.h"
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 #include "light_json.h"
 #include "proto/stream_protocol.h"
 

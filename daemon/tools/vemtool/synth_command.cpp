@@ -15,7 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
-#include "plain_help.h"
+#include "util/cli_value_names.h"
 #include "mapio/map_file.h"
 #include "synth/scene_factory.h"
 #include "synth/synthetic_camera.h"

@@ -1,6 +1,6 @@
 // Option types for --help as a person reads them. CLI11 names an option's value by its C++ type and
 // its validators ("INT:INT in [1 - 65536]", "TEXT:FILE"); these keep the check and let the value's
-// name say what is expected ("1..65536", "FILE"). util/cli_conventions.h does the rest (choices,
+// name say what is expected ("1..65536", "FILE"); for vemtool and vemcalib. cli_conventions.h does the rest (choices,
 // defaults, the exit statuses).
 #pragma once
 
