@@ -182,7 +182,7 @@ std::string accuracyReport(const StudyContext& context, const std::vector<Sweep>
         "over the maps; labels give the swept parameter.\n\n",
         plotName);
   }
-  md += risesSection(sweeps, studies, context.referenceTarget);
+  md += risesSection(sweeps, studies, context.referenceTarget) + defaultsNote() + "\n";
   md +=
       "## Sweeps\n\nEach cell: median frame time in ms (OpenGL: in brackets its shadow pass); "
       "relative RMS / mean absolute error against the map's reference.\n\n";

@@ -48,6 +48,8 @@ struct StudyContext {
 // What issue 17's investigation measured about each rise (not computed by this run: the numbers
 // there come from the investigation, render_rise_notes.cpp says how).
 [[nodiscard]] std::string riseNotes();
+// What vemview's and vemd's defaults take from the study (issue 17), hand-written like riseNotes.
+[[nodiscard]] std::string defaultsNote();
 
 // 3-5 sentences on what the numbers say, computed from them.
 [[nodiscard]] std::string studyFindings(const std::vector<Sweep>& sweeps,
