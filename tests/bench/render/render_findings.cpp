@@ -231,7 +231,10 @@ std::string benchmarkSection(const StudyContext& context, const std::vector<Swee
   }
   md +=
       fmt::format("\n{}{}\n\n", lightCountSentence(sweeps, studies), gapSentence(sweeps, studies));
-  if (!plotName.empty()) md += fmt::format("![accuracy against time]({})\n\n", plotName);
+  if (!plotName.empty()) {
+    md += fmt::format("![render error against frame time]({})\n\n{}\n\n", plotName,
+                      plotCaption(studies));
+  }
   return md;
 }
 

@@ -167,6 +167,20 @@ std::string meanedMaps(const std::vector<MapStudy>& studies) {
   return out;
 }
 
+std::string plotCaption(const std::vector<MapStudy>& studies) {
+  return fmt::format(
+      "Render error against frame time, log-log. Error (y, per cent): the relative RMS "
+      "sqrt(sum |a - r|^2 / sum |r|^2) of the rendered image a against the Monte Carlo reference r "
+      "over the RGB channels of the pixels the scene covers, geometric mean over the maps ({}). "
+      "Time (x, ms): the median wall-clock time of one frame, mean over the same maps, under "
+      "the load stated above. Labels mark a few points of each sweep; the legend names the "
+      "series. Regions off (dashed, hollow markers) gives the same error as regions on in both "
+      "renderers (the regions skip only lights that face away from a surface, which add "
+      "nothing); with Embree it also costs the same work, so its times differ only by this "
+      "shared machine's timing noise and its dashed line runs along the solid one.",
+      meanedMaps(studies));
+}
+
 std::string columnName(const MapStudy& study) {
   return study.damaged ? study.map + " (damaged)" : study.map;
 }
@@ -176,11 +190,8 @@ std::string accuracyReport(const StudyContext& context, const std::vector<Sweep>
   std::string md = header(context) + mapTable(context, studies);
   md += fmt::format("## What the numbers say\n\n{}\n\n", studyFindings(sweeps, studies));
   if (!plotName.empty()) {
-    md += fmt::format(
-        "![relative RMS error against frame time]({})\n\nRelative RMS error against median "
-        "frame time, log-log, each point the geometric mean of the error and the mean time "
-        "over the maps; labels give the swept parameter.\n\n",
-        plotName);
+    md += fmt::format("![render error against frame time]({})\n\n{}\n\n", plotName,
+                      plotCaption(studies));
   }
   md += risesSection(sweeps, studies, context.referenceTarget) + defaultsNote() + "\n";
   md +=

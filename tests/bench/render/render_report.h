@@ -82,6 +82,8 @@ struct StudyContext {
 [[nodiscard]] double meanTimeMs(const std::vector<MapStudy>& studies, const StudyConfig& config);
 // The maps the means are over, for the text: "sky, studio, city; not park, damaged".
 [[nodiscard]] std::string meanedMaps(const std::vector<MapStudy>& studies);
+// The render plot's caption: what its axes are, in which units, over which maps.
+[[nodiscard]] std::string plotCaption(const std::vector<MapStudy>& studies);
 // A map's column title: "park (damaged)" for a damaged map.
 [[nodiscard]] std::string columnName(const MapStudy& study);
 
