@@ -62,7 +62,9 @@ the frame time; under city it gives 5.19 % relative RMS and 3.10 % mean absolute
 one direction over a wide cone loses the members that face away from a surface. Q = 72 (vemd's
 default budget) is cheaper and worse on broad light (city 6.27 % / 4.74 %, 3.7 % too bright).
 Issue 17's "7.4 % against 12.6 %" on park was mostly the caster bug: unclustered OpenGL on park is
-7.18 % at N = 1024 after the fix.
+7.18 % at N = 1024 after the fix. With Embree, whose shadows are exact, clustering also costs accuracy under studio's larger
+bright source (4.47 % against 2.60 %): there the shadow maps, not the light count, limit
+OpenGL, so clustering costs OpenGL nothing (3.62 % either way).
 
 - vemview now defaults to N = 1024 lights clustered to about Q = 128 (`--count 1024 --cluster
   128`; before: 256 unclustered): against the old default it is as accurate or better on sun maps
