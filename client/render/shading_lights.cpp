@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <numeric>
 
 #include <glm/glm.hpp>
@@ -37,13 +38,29 @@ LightSet prefixOf(const LightSet& lights, std::size_t count) {
   return prefix;
 }
 
-// The S lights of largest luminance (ties in light order), by slot.
+// Luminances this close (relative) are ties. The generator's lights carry equal shares, but their
+// float rgb (the map's colour at the sample times the share) give luminances that differ in the
+// last bits, by colour: without a tolerance those bits chose the casters (issue 17: on park.exr,
+// whose sun is pure blue, every one of the 64 casters of 1024 lights sat in the sun and the other
+// lights borrowed maps up to 180 degrees away).
+constexpr double kLuminanceTieRelative = 1e-4;
+
+// The S lights of largest luminance (ties in light order), by slot. Luminances are compared by
+// their distance to the largest in steps of kLuminanceTieRelative (integer keys: a strict weak
+// order), so lights within a step of each other keep their order.
 std::vector<std::uint32_t> shadowCastersOf(const LightSet& diffuse, std::size_t shadowedCount) {
   std::vector<std::uint32_t> order(diffuse.lights.size());
   std::iota(order.begin(), order.end(), 0U);
-  std::ranges::stable_sort(order, [&](std::uint32_t a, std::uint32_t b) {
-    return luminance(diffuse.lights[a].rgb) > luminance(diffuse.lights[b].rgb);
-  });
+  double largest = 0.0;
+  for (const Light& light : diffuse.lights) largest = std::max(largest, luminance(light.rgb));
+  std::vector<std::int64_t> rank(diffuse.lights.size(), 0);
+  if (largest > 0.0) {
+    for (std::size_t i = 0; i < rank.size(); ++i) {
+      const double y = std::max(luminance(diffuse.lights[i].rgb), largest * 1e-30);
+      rank[i] = std::llround(std::log(largest / y) / std::log1p(kLuminanceTieRelative));
+    }
+  }
+  std::ranges::stable_sort(order, {}, [&](std::uint32_t i) { return rank[i]; });
   order.resize(std::min({shadowedCount, kMaxShadowMaps, order.size()}));
   return order;
 }

@@ -14,8 +14,9 @@
 //   H = its first highCount lights rescaled, and their region lists (section 4.2,
 //   core/glossy_light_sets.h). The specular term of glossy surfaces walks these.
 // - Shadows (section 5.2.1): shadowCasters lists the diffuse lights that get a shadow map, the
-//   shadowedCount most important (largest luminance, ties in light order, so without clustering the
-//   first ones), in slot order. Every other diffuse light, and every L light, takes the map of the
+//   shadowedCount most important (largest luminance; luminances within 1e-4 of each other, relative,
+//   are ties, kept in light order, so without clustering the first ones whatever their colour), in
+//   slot order. Every other diffuse light, and every L light, takes the map of the
 //   caster nearest to it in angle (the paper's "most relevant shadow map"): shadowSlotOfDiffuse and
 //   shadowSlotOfLow give that slot, or -1 when there are no shadow maps (unshadowed).
 // - lightsKey identifies the light directions that the shadow maps depend on: equal keys mean the

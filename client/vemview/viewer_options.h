@@ -29,11 +29,11 @@ struct ViewerOptions {
   int widthPx = 640;
   int heightPx = 480;
   // Lighting.
-  std::size_t lightCount = 256;
+  std::size_t lightCount = 1024;
   std::size_t shadowedCount = 64;
   int shadowMapPx = 256;
   bool regions = true;
-  int clusterBudget = 0;
+  int clusterBudget = 128;
   std::optional<double> targetFrameMs;
   bool background = false;
   std::string screenshot;  // window only: the last frame as shown

@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <glm/glm.hpp>
+
+#include "core/color.h"
 
 namespace vem::render {
 namespace {
@@ -54,6 +58,35 @@ TEST(ShadingLights, ShadowCastersAreTheBrightestLightsNotTheFirst) {
   ASSERT_EQ(s.shadowCasters.size(), 2U);
   EXPECT_EQ(s.shadowCasters[0], 1U);
   EXPECT_EQ(s.shadowCasters[1], 3U);
+}
+
+// Issue 17: the generator's lights carry equal luminance shares, but a pure-blue light's float
+// luminance (park.exr's damaged sun) can come out a few ulps above a grey one's. Those bits chose
+// the casters: at N = 1024, S = 64 every caster sat in park's sun.
+TEST(ShadingLights, EqualPowerCastersAreTheFirstLightsWhateverTheirColourRoundsTo) {
+  const double share = 1.0 / 3.0;
+  const glm::vec3 grey = glm::vec3(float(share));
+  float blue = float(share / kRec709B);
+  while (luminance(glm::vec3(0.0F, 0.0F, blue)) <= luminance(grey)) {
+    blue = std::nextafter(blue, 2.0F * blue);
+  }
+  ASSERT_LT(luminance(glm::vec3(0.0F, 0.0F, blue)) / luminance(grey) - 1.0, 1e-6);
+  LightSet set = lightsAlong({{{0, 1, 0}, 1},
+                              {{1, 1, 0}, 1},
+                              {{0, 1, 1}, 1},
+                              {{-1, 1, 0}, 1},
+                              {{1, 0.2F, 1}, 1},
+                              {{1, 0.2F, 1.1F}, 1},
+                              {{1.1F, 0.2F, 1}, 1},
+                              {{1, 0.25F, 1}, 1}});
+  for (std::size_t i = 0; i < set.lights.size(); ++i) {
+    set.lights[i].rgb = i < 4 ? grey : glm::vec3(0.0F, 0.0F, blue);
+  }
+  LightingOptions options;
+  options.lightCount = 8;
+  options.shadowedCount = 4;
+  const ShadingLights s = buildShadingLights(set, geometry(), options);
+  EXPECT_EQ(s.shadowCasters, (std::vector<std::uint32_t>{0, 1, 2, 3}));
 }
 
 TEST(ShadingLights, UnshadowedLightTakesTheMapOfTheNearestCaster) {

@@ -123,7 +123,7 @@ TEST_F(VemviewCli, LoneConvexObjectRendersWithoutShadowMaps) {
 // The status names the maps drawn of the maps planned: "shadow maps 16 of 16".
 TEST_F(VemviewCli, ShadowedCountIsWhatTheAtlasHoldsNotWhatWasAskedFor) {
   const CommandRun r =
-      run(" --headless --width 64 --height 48 --count 32 --shadowed 32 "
+      run(" --headless --width 64 --height 48 --count 32 --shadowed 32 --cluster 0 "
           "--shadow-map-px 4096 --scene spheres --no-png --no-exr --out " +
           path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -175,7 +175,7 @@ TEST_F(VemviewCli, ClusteringCutsTheLightsAndShadowsEachCluster) {
 
 TEST_F(VemviewCli, AdaptiveCountHalvesTowardAnUnreachableTargetDownToItsFloor) {
   const CommandRun r =
-      run(" --headless --width 64 --height 48 --count 256 --shadowed 8 "
+      run(" --headless --width 64 --height 48 --count 256 --shadowed 8 --cluster 0 "
           "--target-ms 0.001 --orbit 1 --frames 8 --scene spheres --no-png --no-exr "
           "--out " +
           path("out"));

@@ -3,7 +3,7 @@
 // shadowed lights, the shadow-map resolution, angular regions and clustering (study_sweeps.h),
 // each frame timed and compared with the Embree Monte Carlo reference (cached in the build folder).
 //
-//   vem_render_bench [--maps sky,park,city] [--list-maps] [--table docs/render-accuracy.md]
+//   vem_render_bench [--maps sky,studio,city,park] [--list-maps] [--table docs/render-accuracy.md]
 //                    [--plot docs/render-accuracy-vs-time.png] [--section build/render.md]
 //                    [--cache DIR] [--reference-error 0.01] [--no-gl]
 #include <algorithm>
@@ -11,12 +11,12 @@
 #include <fstream>
 #include <iostream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "bench/machine_info.h"
 #include "bench/markdown_output.h"
 #include "bench/render/render_report.h"
 #include "bench/render/study_run.h"
@@ -27,9 +27,11 @@ namespace {
 using namespace vem::bench;
 
 struct BenchOptions {
-  // One map per kind of light (--list-maps): a sun (58 % of the power in 0.1 % of the sphere), a
-  // few bright sources over a broad sky (12 %), broad indoor light (0.7 %).
-  std::vector<std::string> maps{"sky", "park", "city"};
+  // One sound map per kind of light (--list-maps): an outdoor sun (58 % of the power in 0.1 % of
+  // the sphere), studio's bright source (66 %, at a peak 18 times lower than sky's: larger and
+  // softer), broad indoor light (0.7 %); and park, a damaged map (knownDamage: a blue-only sun),
+  // kept as a hard case. park was the "few bright sources" map until issue 17 found its sun.
+  std::vector<std::string> maps{"sky", "studio", "city", "park"};
   std::string hdriDir = std::string(VEM_SHARED_DATA_DIR) + "/hdri";
   StudyImageSize size;
   double referenceError = 0.01;
@@ -45,23 +47,11 @@ struct BenchOptions {
   std::string section;
 };
 
-std::string cpuModel() {
-  std::ifstream in("/proc/cpuinfo");
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  }
-  return "unknown CPU";
-}
-
 double loadAverage() {
   std::ifstream loadavg("/proc/loadavg");
   double load = 0.0;
   loadavg >> load;
   return load;
-}
-
-std::string machine() {
-  return fmt::format("{}, {} hardware threads", cpuModel(), std::thread::hardware_concurrency());
 }
 
 // The arguments with the project folder left out of paths, for the report.
@@ -122,8 +112,9 @@ int listMaps(const BenchOptions& o) {
     auto map = vem::mapio::loadMap(path);
     if (!map) return fail(map.error().message);
     const MapCharacter c = characterOf(*map);
-    fmt::print("| {} | {:.0f} | {} | {} |\n", path.stem().string(), c.peakToMean,
-               percent(c.topShareOfPower), describeCharacter(c));
+    const auto damage = knownDamage(path.stem().string());
+    fmt::print("| {} | {:.0f} | {} | {}{} |\n", path.stem().string(), c.peakToMean,
+               percent(c.topShareOfPower), describeCharacter(c), damage ? "; " + *damage : "");
   }
   return 0;
 }
@@ -189,7 +180,9 @@ std::expected<MapStudy, std::string> studyMap(const BenchOptions& o, const std::
   fmt::print(stderr, "{}: reference {} samples per pixel, error {:.4f}, {:.0f} s{}\n", name,
              reference->samplesPerPixel, reference->relativeError, reference->renderSeconds,
              reference->fromCache ? " (cached)" : "");
-  context.mapReasons.push_back(describeCharacter(map->character));
+  context.mapReasons.push_back(
+      map->damage ? fmt::format("**{}** ({})", *map->damage, describeCharacter(map->character))
+                  : describeCharacter(map->character));
   return runMapStudy(*map, in.scene, in.geometry, *reference, in.sweeps, in.renderers);
 }
 
@@ -233,7 +226,7 @@ int main(int argc, char** argv) {
   if (options.listMaps) return listMaps(options);
   StudyContext context;
   context.command = commandLine(argc, argv);
-  context.machine = machine();
+  context.machine = machineDescription();
   context.loadAverages = {loadAverage(), 0.0};
   context.widthPx = options.size.widthPx;
   context.heightPx = options.size.heightPx;

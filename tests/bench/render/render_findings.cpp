@@ -43,7 +43,10 @@ std::string lightCountSentence(const std::vector<Sweep>& sweeps,
     out += fmt::format(
         "{}{} goes from {} relative RMS error at N = {} to {} at N = {} while its frame time "
         "goes from {} to {} ms",
-        out.empty() ? "Over the maps (geometric mean of the error, mean time), " : "; ", renderer,
+        out.empty() ? fmt::format("Over the maps ({}; geometric mean of the error, mean time), ",
+                                  meanedMaps(studies))
+                    : "; ",
+        renderer,
         percent(meanError(studies, first)), s->points.front().label,
         percent(meanError(studies, last)), s->points.back().label,
         milliseconds(meanTimeMs(studies, first)), milliseconds(meanTimeMs(studies, last)));
@@ -126,13 +129,14 @@ std::optional<RegionEffect> regionEffect(const std::vector<Sweep>& sweeps,
 
 std::string clusterPart(const std::vector<Sweep>& sweeps, const std::vector<MapStudy>& studies,
                         const std::string& renderer) {
-  const auto q32 = configAt(sweeps, "e", renderer + ", N = 1024", "32");
+  const auto q72 = configAt(sweeps, "e", renderer + ", N = 1024", "72");
+  const auto q128 = configAt(sweeps, "e", renderer + ", N = 1024", "128");
   const auto off = configAt(sweeps, "e", renderer + ", N = 1024", "off");
-  if (!q32 || !off) return "";
-  return fmt::format("{} from {} to {} ms ({} error against {})", renderer,
-                     milliseconds(meanTimeMs(studies, *off)),
-                     milliseconds(meanTimeMs(studies, *q32)), percent(meanError(studies, *q32)),
-                     percent(meanError(studies, *off)));
+  if (!q72 || !q128 || !off) return "";
+  return fmt::format("{} from {} ms and {} error to {} ms and {} (Q = 72: {} ms, {})", renderer,
+                     milliseconds(meanTimeMs(studies, *off)), percent(meanError(studies, *off)),
+                     milliseconds(meanTimeMs(studies, *q128)), percent(meanError(studies, *q128)),
+                     milliseconds(meanTimeMs(studies, *q72)), percent(meanError(studies, *q72)));
 }
 
 std::string regionClusterSentence(const std::vector<Sweep>& sweeps,
@@ -157,7 +161,7 @@ std::string regionClusterSentence(const std::vector<Sweep>& sweeps,
         fmt::join(ratios, " and by "), percent(errorChange));
   }
   if (!clusters.empty()) {
-    out += fmt::format("{}clustering the 1024 lights to Q = 32 takes {}", out.empty() ? " " : "; ",
+    out += fmt::format("{}clustering the 1024 lights to Q = 128 takes {}", out.empty() ? " " : "; ",
                        fmt::join(clusters, " and "));
   }
   return out.empty() ? out : out + ".";
@@ -200,12 +204,13 @@ std::string benchmarkSection(const StudyContext& context, const std::vector<Swee
   std::string md = fmt::format(
       "## Rendering: accuracy against time (vem_render_bench)\n\n"
       "`cmake --build build --target render-bench`: the default scene at {} x {} under {} real "
-      "HDRIs, error against the Embree Monte Carlo reference (relative RMS, geometric mean over "
-      "the maps) and median frame time (mean over the maps), S = min(N, 64) shadow maps of "
-      "256 px, regions on. OpenGL: {}. Every sweep (shadowed lights, map resolution, regions, "
-      "clustering), the maps one by one and the plot: [{}]({}).\n\n| N |",
-      context.widthPx, context.heightPx, studies.size(), glDescription(context), tableName,
-      tableName);
+      "HDRIs, error against the Embree Monte Carlo reference (relative RMS of the image, "
+      "geometric mean over the maps: {}) and median frame time (mean over the same maps), "
+      "S = min(N, 64) shadow maps of 256 px, regions on. OpenGL: {}. Every sweep (shadowed "
+      "lights, map resolution, regions, clustering), the maps one by one (the damaged one too) "
+      "and the plot: [{}]({}).\n\n| N |",
+      context.widthPx, context.heightPx, studies.size(), meanedMaps(studies),
+      glDescription(context), tableName, tableName);
   const auto found = std::ranges::find(sweeps, std::string("a"), &Sweep::id);
   if (found == sweeps.end()) return md + "(The light-count sweep was not run.)\n\n";
   const Sweep& a = *found;
@@ -226,7 +231,10 @@ std::string benchmarkSection(const StudyContext& context, const std::vector<Swee
   }
   md +=
       fmt::format("\n{}{}\n\n", lightCountSentence(sweeps, studies), gapSentence(sweeps, studies));
-  if (!plotName.empty()) md += fmt::format("![accuracy against time]({})\n\n", plotName);
+  if (!plotName.empty()) {
+    md += fmt::format("![render error against frame time]({})\n\n{}\n\n", plotName,
+                      plotCaption(studies));
+  }
   return md;
 }
 

@@ -1,8 +1,10 @@
 #include "bench/render/render_report.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace vem::bench {
 namespace {
@@ -75,7 +77,7 @@ std::string sweepTable(const Sweep& sweep, const std::vector<MapStudy>& studies)
       fmt::format("### {}. {}\n\n| renderer | {} |", sweep.id, sweep.title, sweep.variable);
   std::string rule = "|---|---:|";
   for (const MapStudy& s : studies) {
-    md += fmt::format(" {0} ms | {0} RMS / abs |", s.map);
+    md += fmt::format(" {0} ms | {0} RMS / abs |", columnName(s));
     rule += "---:|---:|";
   }
   md += fmt::format("\n{}\n", rule);
@@ -130,16 +132,57 @@ std::string milliseconds(double ms) {
   return ms < 10.0 ? fmt::format("{:.2f}", ms) : fmt::format("{:.0f}", ms);
 }
 
+bool inMeans(const std::vector<MapStudy>& studies, const MapStudy& study) {
+  return !study.damaged || std::ranges::all_of(studies, &MapStudy::damaged);
+}
+
 double meanError(const std::vector<MapStudy>& studies, const StudyConfig& config) {
   double sumLog = 0.0;
-  for (const MapStudy& s : studies) sumLog += std::log(std::max(s.at(config).relativeRms, 1e-12));
-  return std::exp(sumLog / double(studies.size()));
+  int count = 0;
+  for (const MapStudy& s : studies) {
+    if (!inMeans(studies, s)) continue;
+    sumLog += std::log(std::max(s.at(config).relativeRms, 1e-12));
+    ++count;
+  }
+  return std::exp(sumLog / double(std::max(count, 1)));
 }
 
 double meanTimeMs(const std::vector<MapStudy>& studies, const StudyConfig& config) {
   double sum = 0.0;
-  for (const MapStudy& s : studies) sum += s.at(config).timeMs;
-  return sum / double(studies.size());
+  int count = 0;
+  for (const MapStudy& s : studies) {
+    if (!inMeans(studies, s)) continue;
+    sum += s.at(config).timeMs;
+    ++count;
+  }
+  return sum / double(std::max(count, 1));
+}
+
+std::string meanedMaps(const std::vector<MapStudy>& studies) {
+  std::vector<std::string> sound;
+  std::vector<std::string> apart;
+  for (const MapStudy& s : studies) (inMeans(studies, s) ? sound : apart).push_back(s.map);
+  std::string out = fmt::format("{}", fmt::join(sound, ", "));
+  if (!apart.empty()) out += fmt::format("; not {}, damaged", fmt::join(apart, ", "));
+  return out;
+}
+
+std::string plotCaption(const std::vector<MapStudy>& studies) {
+  return fmt::format(
+      "Render error against frame time, log-log. Error (y, per cent): the relative RMS "
+      "sqrt(sum |a - r|^2 / sum |r|^2) of the rendered image a against the Monte Carlo reference r "
+      "over the RGB channels of the pixels the scene covers, geometric mean over the maps ({}). "
+      "Time (x, ms): the median wall-clock time of one frame, mean over the same maps, under "
+      "the load stated above. Labels mark a few points of each sweep; the legend names the "
+      "series. Regions off (dashed, hollow markers) gives the same error as regions on in both "
+      "renderers (the regions skip only lights that face away from a surface, which add "
+      "nothing); with Embree it also costs the same work, so its times differ only by this "
+      "shared machine's timing noise and its dashed line runs along the solid one.",
+      meanedMaps(studies));
+}
+
+std::string columnName(const MapStudy& study) {
+  return study.damaged ? study.map + " (damaged)" : study.map;
 }
 
 std::string accuracyReport(const StudyContext& context, const std::vector<Sweep>& sweeps,
@@ -147,12 +190,10 @@ std::string accuracyReport(const StudyContext& context, const std::vector<Sweep>
   std::string md = header(context) + mapTable(context, studies);
   md += fmt::format("## What the numbers say\n\n{}\n\n", studyFindings(sweeps, studies));
   if (!plotName.empty()) {
-    md += fmt::format(
-        "![relative RMS error against frame time]({})\n\nRelative RMS error against median "
-        "frame time, log-log, each point the geometric mean of the error and the mean time "
-        "over the maps; labels give the swept parameter.\n\n",
-        plotName);
+    md += fmt::format("![render error against frame time]({})\n\n{}\n\n", plotName,
+                      plotCaption(studies));
   }
+  md += risesSection(sweeps, studies, context.referenceTarget) + defaultsNote() + "\n";
   md +=
       "## Sweeps\n\nEach cell: median frame time in ms (OpenGL: in brackets its shadow pass); "
       "relative RMS / mean absolute error against the map's reference.\n\n";

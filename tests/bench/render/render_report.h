@@ -40,6 +40,17 @@ struct StudyContext {
                                          const std::vector<MapStudy>& studies,
                                          const std::string& plotName);
 
+// The steps of the N and S sweeps where an error grows (beyond half the reference's target error),
+// as a table, then riseNotes().
+[[nodiscard]] std::string risesSection(const std::vector<Sweep>& sweeps,
+                                       const std::vector<MapStudy>& studies,
+                                       double referenceTarget);
+// What issue 17's investigation measured about each rise (not computed by this run: the numbers
+// there come from the investigation, render_rise_notes.cpp says how).
+[[nodiscard]] std::string riseNotes();
+// What vemview's and vemd's defaults take from the study (issue 17), hand-written like riseNotes.
+[[nodiscard]] std::string defaultsNote();
+
 // 3-5 sentences on what the numbers say, computed from them.
 [[nodiscard]] std::string studyFindings(const std::vector<Sweep>& sweeps,
                                         const std::vector<MapStudy>& studies);
@@ -65,8 +76,15 @@ struct StudyContext {
 // Helpers shared by the report's parts.
 [[nodiscard]] std::string percent(double fraction);  // "4.12 %"
 [[nodiscard]] std::string milliseconds(double ms);   // "12.3"
-// Geometric mean over the maps of an error, arithmetic mean of a time.
+// Geometric mean over the maps of an error, arithmetic mean of a time: over the sound maps (a
+// damaged map, MapStudy::damaged, is shown but not averaged, unless every map is damaged).
 [[nodiscard]] double meanError(const std::vector<MapStudy>& studies, const StudyConfig& config);
 [[nodiscard]] double meanTimeMs(const std::vector<MapStudy>& studies, const StudyConfig& config);
+// The maps the means are over, for the text: "sky, studio, city; not park, damaged".
+[[nodiscard]] std::string meanedMaps(const std::vector<MapStudy>& studies);
+// The render plot's caption: what its axes are, in which units, over which maps.
+[[nodiscard]] std::string plotCaption(const std::vector<MapStudy>& studies);
+// A map's column title: "park (damaged)" for a damaged map.
+[[nodiscard]] std::string columnName(const MapStudy& study);
 
 }  // namespace vem::bench

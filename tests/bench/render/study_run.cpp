@@ -45,8 +45,12 @@ std::expected<MapStudy, std::string> runMapStudy(const StudyMap& map, const Stud
                                                  const StudyReference& reference,
                                                  const std::vector<Sweep>& sweeps,
                                                  StudyRenderers renderers) {
-  MapStudy out{
-      map.name, map.character.peakToMean, map.character.topShareOfPower, factsOf(reference), {}};
+  MapStudy out{map.name,
+               map.damage.has_value(),
+               map.character.peakToMean,
+               map.character.topShareOfPower,
+               factsOf(reference),
+               {}};
   for (const Sweep& sweep : sweeps) {
     for (const SweepSeries& series : sweep.series) {
       for (const SweepPoint& point : series.points) {

@@ -34,6 +34,7 @@ struct ReferenceFacts {
 
 struct MapStudy {
   std::string map;
+  bool damaged = false;  // StudyMap::damage: shown as a hard case, out of the means over the maps
   double peakToMean = 0.0;
   double topShareOfPower = 0.0;
   ReferenceFacts reference;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <expected>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,13 @@ struct StudyMap {
   LightSet lights;  // kStudyMaxLights lights; the first N are the N-light set
   CubeMap cube;
   MapCharacter character;
+  std::optional<std::string> damage;  // knownDamage(name)
 };
+
+// The damage ../shared/data/README.md lists for a shared HDRI ("its sun is blue only ..."), or
+// nothing for a sound map. A damaged map stays in the study as a hard case, labelled, and out of
+// the means over the maps.
+[[nodiscard]] std::optional<std::string> knownDamage(const std::string& mapName);
 
 [[nodiscard]] std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& path);
 

@@ -85,7 +85,7 @@ Sweep clusteringSweep(bool withGl) {
   for (const RendererKind renderer : renderers(withGl)) {
     for (const std::size_t n : {256U, 1024U}) {
       SweepSeries series{fmt::format("{}, N = {}", rendererLabel(renderer), n), {}};
-      for (const int q : {8, 32, 128, 0}) {
+      for (const int q : {8, 32, 72, 128, 0}) {  // 72: vemd's default budget
         StudyConfig config = baseConfig(renderer, n);
         config.lighting.clusterBudget = q;
         series.points.push_back({config, q == 0 ? std::string("off") : fmt::format("{}", q)});
