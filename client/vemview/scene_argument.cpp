@@ -48,6 +48,6 @@ std::expected<scene::Scene, std::string> loadSceneArgument(const std::string& ar
   return loaded;
 }
 
-std::string defaultMapPath() { return std::string(VEM_SHARED_DATA_DIR) + "/hdri/park.exr"; }
+std::string defaultMapPath() { return std::string(VEM_SHARED_DATA_DIR) + "/hdri/esplanade.exr"; }
 
 }  // namespace vem::view
