@@ -83,7 +83,7 @@ TEST_F(VemviewCli, StaticLightsAndCameraAreDrawnOnceAndNotRedrawn) {
 }
 
 TEST_F(VemviewCli, OrbitingCameraRedrawsButReusesTheShadowMaps) {
-  const CommandRun r = run(kSmall + "--scene spheres --frames 3 --orbit 15 --out " + path("out"));
+  const CommandRun r = run(kSmall + "--cluster 0 --scene spheres --frames 3 --orbit 15 --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto lines = jsonLines(dir_ / "out" / "timing.jsonl");
   ASSERT_EQ(lines.size(), 3U);
