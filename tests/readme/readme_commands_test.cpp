@@ -39,8 +39,6 @@ constexpr Rewrite kRewrites[] = {
      "", "the build that runs this test has installed the packages, configured and built"},
     {"--scene clouds --frames 300", "--scene clouds --frames 30",
      "a tenth of the frames: the same code path in a tenth of the time"},
-    {"--lights 256 --frames 90", "--lights 256 --frames 6",
-     "the live synthetic sky renders about 4 frames/s on 2 cores; 6 frames show it records"},
     {"--frames 30 --orbit 3", "--frames 3 --orbit 3", "3 frames of the orbit show it turns"},
     {"--renderer reference --map ../shared/data/hdri/esplanade.exr --width 320 --height 240",
      "--renderer reference --map ../shared/data/hdri/esplanade.exr --width 80 --height 60 "
