@@ -9,17 +9,7 @@
 # Exits 77 (ctest SKIP_RETURN_CODE) when a tool is not built: the sanitizer build folder builds
 # only the test targets and some tools.
 set -eu
-build=$1
-source=$2
-work=$3
-shift 3
-for tool_file in "$@"; do
-  if [ ! -x "$tool_file" ]; then
-    echo "$tool_file is not built (this test needs the full build: cmake --build $build): skipped"
-    exit 77
-  fi
-done
-fail() { echo "FAIL: $*" >&2; exit 1; }
+. "$(dirname "$0")/needs_built_tools.sh"
 tools="vemd vemtool vemview vemcalib"
 configs="vemd.toml camera-example.toml"
 
