@@ -66,6 +66,9 @@ constexpr Skip kSkips[] = {
 
 // A window needs a display: Xvfb stands in, and a frame limit ends the window.
 constexpr const char* kWindowWhy = "no display here: xvfb-run stands in, and --frames 2 closes the window";
+// Tests run side by side, and two vemds cannot both stream on the default 127.0.0.1:8765.
+constexpr const char* kOwnPortWhy =
+    "tests run side by side: each vemd streams on a free port of its own, not the default 8765";
 // Commands that talk to a running vemd get one, started by the test on a free loopback port.
 constexpr const char* kStreamUrl = "ws://127.0.0.1:8765";
 
@@ -156,6 +159,10 @@ void runSection(const std::string& heading, const std::string& name) {
         command = replaceAll(command, r.from, r.to);
         std::cout << "rewritten (" << r.why << ")\n";
       }
+    }
+    if (contains(command, "vemd --source")) {
+      command = replaceAll(command, "vemd --source", "vemd --stream-listen 127.0.0.1:0 --source");
+      std::cout << "rewritten (" << kOwnPortWhy << ")\n";
     }
     const bool tool = command.rfind("vemview ", 0) == 0 || command.rfind("$V ", 0) == 0;
     if (tool && !contains(command, "--headless")) {
