@@ -2,7 +2,6 @@
 
 #include <iostream>
 #include <memory>
-#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -44,9 +43,15 @@ std::string defaultName(std::string_view cli11TypeName, const std::string& defau
   return defaultValue;
 }
 
-std::string withoutFlagValues(std::string names) {
-  static const std::regex kFlagValue{R"(\{[^}]*\})"};
-  return std::regex_replace(names, kFlagValue, "");
+std::string withoutFlagValues(const std::string& names) {
+  std::string plain;
+  bool inValue = false;
+  for (char c : names) {
+    if (c == '{') inValue = true;
+    if (!inValue) plain += c;
+    if (c == '}') inValue = false;
+  }
+  return plain;
 }
 
 class PlainFormatter : public CLI::Formatter {
