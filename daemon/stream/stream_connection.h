@@ -15,6 +15,19 @@
 
 namespace vem::stream {
 
+// Who ended a connection: the server counts closes by this, never by the wording of `why`.
+enum class ConnectionEndCause {
+  ClosedByVemd,    // vemd closed it: its close frame, an oversized message, a send timeout
+  ClosedByClient,  // the client's closing handshake
+  Lost,            // the WebSocket handshake, a read or a write failed, or the client vanished
+};
+
+// How a connection ended: its cause, and one phrase for the log.
+struct ConnectionEnd {
+  ConnectionEndCause cause;
+  std::string why;
+};
+
 // How the server paced one connection (client_lag.h).
 struct ConnectionPacing {
   std::uint64_t holds = 0;          // times the server held messages because the client was behind
@@ -58,8 +71,8 @@ class SessionHost {
   [[nodiscard]] virtual const StreamServerOptions& options() const = 0;
   // The WebSocket handshake completed.
   virtual void opened(Connection& connection) = 0;
-  // The connection ended (`why`: one phrase for the log); called once.
-  virtual void ended(Connection& connection, const std::string& why) = 0;
+  // The connection ended; called once.
+  virtual void ended(Connection& connection, const ConnectionEnd& end) = 0;
   virtual void received(Connection& connection, ClientAction action) = 0;
   // The connection is being closed for reading too slowly (its close frame is on its way).
   virtual void tooSlow(Connection& connection, std::int64_t lagMs) = 0;

@@ -179,17 +179,17 @@ class StreamServer::Impl final : public SessionHost, public UpgradeHost {
     updateDemand();  // and the count of open clients
   }
 
-  void ended(Connection& connection, const std::string& why) override {
+  void ended(Connection& connection, const ConnectionEnd& end) override {
     const ConnectionPacing pacing = connection.pacing();
     if (connection.open && goneLog_.admit(steadyNowNs())) {
       spdlog::info(
           "stream: client {} ({}) gone: {}; {} light frames sent, {} skipped, held {} times "
           "while behind, probe round trip {:.1f} to {:.1f} ms",
-          connection.id(), connection.peer(), why, connection.outbox.sentLights(),
+          connection.id(), connection.peer(), end.why, connection.outbox.sentLights(),
           connection.outbox.skippedLights(), pacing.holds, double(pacing.minRoundTripNs) * 1e-6,
           double(pacing.maxRoundTripNs) * 1e-6);
     }
-    if (why.starts_with("closed by vemd") || why.starts_with("a send did not")) ++closedByServer_;
+    if (end.cause == ConnectionEndCause::ClosedByVemd) ++closedByServer_;
     skippedOfClosed_ += connection.outbox.skippedLights();
     connections_.erase(connection.id());  // may destroy `connection`: last use
     updateDemand();
@@ -228,8 +228,8 @@ class StreamServer::Impl final : public SessionHost, public UpgradeHost {
     return std::nullopt;
   }
 
-  void handshakeEnded(std::uint64_t id, HandshakeOutcome outcome, const std::string& peer,
-                      const std::string& detail) override {
+  void handshakeEnded(std::uint64_t id, HandshakeOutcome outcome, unsigned status,
+                      const std::string& peer, const std::string& detail) override {
     handshakes_.release(id);
     pending_.erase(id);
     handshakesPending_ = handshakes_.pending();
@@ -237,7 +237,7 @@ class StreamServer::Impl final : public SessionHost, public UpgradeHost {
     switch (outcome) {
       case HandshakeOutcome::Upgraded: return;
       case HandshakeOutcome::Answered:
-        if (detail.starts_with("400")) ++refusedBadRequest_;
+        if (status == 400) ++refusedBadRequest_;
         if (refusedLog_.admit(nowNs)) spdlog::warn("stream: refused {} ({})", peer, detail);
         return;
       case HandshakeOutcome::TimedOut:

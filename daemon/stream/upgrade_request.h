@@ -58,8 +58,10 @@ class UpgradeHost {
   // HTTP status and a body.
   [[nodiscard]] virtual std::optional<Refusal> admit(
       const upgrade::http::request<upgrade::http::string_body>& request, bool& controlAllowed) = 0;
-  virtual void handshakeEnded(std::uint64_t id, HandshakeOutcome outcome, const std::string& peer,
-                              const std::string& detail) = 0;
+  // The handshake ended; `status` is the HTTP status of an Answered one (0 otherwise), `detail`
+  // one phrase for the log.
+  virtual void handshakeEnded(std::uint64_t id, HandshakeOutcome outcome, unsigned status,
+                              const std::string& peer, const std::string& detail) = 0;
 
  protected:
   ~UpgradeHost() = default;
@@ -144,7 +146,8 @@ class UpgradeRequest final
   }
 
   void respond(Refusal refusal) {
-    finish(HandshakeOutcome::Answered, std::to_string(refusal.status) + ": " + refusal.body);
+    finish(HandshakeOutcome::Answered, std::to_string(refusal.status) + ": " + refusal.body,
+           refusal.status);
     response_.result(upgrade::http::status(refusal.status));
     response_.version(11);
     response_.set(upgrade::http::field::server, "vemd");
@@ -166,10 +169,10 @@ class UpgradeRequest final
         });
   }
 
-  void finish(HandshakeOutcome outcome, const std::string& detail) {
+  void finish(HandshakeOutcome outcome, const std::string& detail, unsigned status = 0) {
     if (done_) return;
     done_ = true;
-    host_.handshakeEnded(id_, outcome, peer_, detail);
+    host_.handshakeEnded(id_, outcome, status, peer_, detail);
   }
 
   Stream stream_;

@@ -91,8 +91,10 @@ class WebSocketSession final : public Connection,
   }
 
  private:
+  using Cause = ConnectionEndCause;
+
   void onAccept(beast::error_code ec) {
-    if (ec) return end("the WebSocket handshake failed (" + ec.message() + ")");
+    if (ec) return end({Cause::Lost, "the WebSocket handshake failed (" + ec.message() + ")"});
     open = true;
     host_.opened(*this);
     read();
@@ -160,9 +162,9 @@ class WebSocketSession final : public Connection,
     writing_ = false;
     current_.reset();
     sendTimer_.cancel();
-    if (ec)
-      return end(abortReason_.empty() ? "the write failed (" + ec.message() + ")" : abortReason_);
-    pump();
+    if (!ec) return pump();
+    if (!abortReason_.empty()) return end({Cause::ClosedByVemd, abortReason_});
+    end({Cause::Lost, "the write failed (" + ec.message() + ")"});
   }
 
   // The probe after a data message: a ping whose pong says the client has read that far.
@@ -243,49 +245,53 @@ class WebSocketSession final : public Connection,
     });
     ws_.async_close(reason, [self = this->shared_from_this()](beast::error_code) {
       self->writing_ = false;
-      self->end("closed by vemd: " + self->closeReason_);
+      self->end({Cause::ClosedByVemd, "closed by vemd: " + self->closeReason_});
     });
   }
 
-  // Closes the socket: pending reads and writes complete with an error.
+  // Closes the socket: pending reads and writes complete with an error, and the connection ends
+  // as closed by vemd for `why`.
   void abort(std::string why) {
     abortReason_ = std::move(why);
     beast::error_code ignored;
     beast::get_lowest_layer(ws_).socket().close(ignored);
   }
 
-  std::string readFailure(beast::error_code ec) const {
-    if (!abortReason_.empty()) return abortReason_;
-    if (!closeReason_.empty()) return "closed by vemd: " + closeReason_;
+  ConnectionEnd readFailure(beast::error_code ec) const {
+    if (!abortReason_.empty()) return {Cause::ClosedByVemd, abortReason_};
+    if (!closeReason_.empty()) return {Cause::ClosedByVemd, "closed by vemd: " + closeReason_};
     if (ec == websocket::error::closed) {
       const auto& reason = ws_.reason();
-      return "the client closed the connection (" + std::to_string(reason.code) +
-             (reason.reason.empty() ? ""
-                                    : ", \"" +
-                                          util::printable(std::string_view(reason.reason.data(),
-                                                                           reason.reason.size())) +
-                                          "\"") +
-             ")";
+      return {Cause::ClosedByClient,
+              "the client closed the connection (" + std::to_string(reason.code) +
+                  (reason.reason.empty() ? ""
+                                         : ", \"" +
+                                               util::printable(std::string_view(
+                                                   reason.reason.data(), reason.reason.size())) +
+                                               "\"") +
+                  ")"};
     }
     if (ec == websocket::error::message_too_big) {
-      return "closed by vemd: a message over " + std::to_string(kMaxClientMessageBytes) +
-             " bytes (1009)";
+      return {Cause::ClosedByVemd, "closed by vemd: a message over " +
+                                       std::to_string(kMaxClientMessageBytes) + " bytes (1009)"};
     }
-    if (ec == beast::error::timeout) return "the client stopped answering (idle timeout)";
+    if (ec == beast::error::timeout) {
+      return {Cause::Lost, "the client stopped answering (idle timeout)"};
+    }
     if (ec == boost::asio::error::eof || ec == boost::asio::error::connection_reset) {
-      return "the client left without a closing handshake (" + ec.message() + ")";
+      return {Cause::Lost, "the client left without a closing handshake (" + ec.message() + ")"};
     }
-    return "the connection failed (" + ec.message() + ")";
+    return {Cause::Lost, "the connection failed (" + ec.message() + ")"};
   }
 
-  void end(const std::string& why) {
+  void end(const ConnectionEnd& how) {
     if (ended_) return;
     ended_ = true;
     sendTimer_.cancel();
     lagTimer_.cancel();
     beast::error_code ignored;
     beast::get_lowest_layer(ws_).socket().close(ignored);
-    host_.ended(*this, why);
+    host_.ended(*this, how);
   }
 
   static constexpr const char* kProbePrefix = "vem-probe ";

@@ -258,6 +258,35 @@ TEST(StreamServer, TextMessageClosesThatClientOnlyWith1003) {
   expectOnlyThatClientClosed(*server, bad, good, 1003);
 }
 
+// The bug this guards: closedByServer was counted by matching the start of the log phrase, so
+// rewording a phrase silently moved a close between "closed by vemd" and the rest. Each close is
+// now counted by its typed cause: vemd's two closes count, the client's own close and a vanished
+// client do not.
+TEST(StreamServer, ClosesAreCountedByWhoClosedNotByTheWordingOfTheirLogLine) {
+  auto server = startServer();
+  WsTestClient oversized, malformed, polite, vanished;
+  for (WsTestClient* c : {&oversized, &malformed, &polite, &vanished}) {
+    ASSERT_EQ(c->connect(server->boundPort()), 0);
+  }
+  ASSERT_TRUE(eventually([&] { return server->counters().clients == 4; }));
+  // vemd closes these two: 1009 and 1007.
+  (void)oversized.sendRaw(std::string(kMaxClientMessageBytes + 1, 'x'));
+  ASSERT_TRUE(malformed.sendRaw("\xff\xff\xff\xff\xff"));
+  while (oversized.read()) {
+  }
+  while (malformed.read()) {
+  }
+  // These two end the connection themselves: a closing handshake whose reason reads like vemd's,
+  // and a socket that just goes away.
+  polite.closeWith("closed by vemd: so says the client");
+  vanished.drop();
+  ASSERT_TRUE(eventually([&] { return server->counters().clients == 0; }));
+  EXPECT_EQ(oversized.closeCode(), 1009);
+  EXPECT_EQ(malformed.closeCode(), 1007);
+  EXPECT_EQ(server->counters().closedByServer, 2u);
+  EXPECT_EQ(server->counters().closedTooSlow, 0u);
+}
+
 TEST(StreamServer, ConnectionsOverTheCapGet503) {
   StreamServerOptions options;
   options.maxClients = 2;

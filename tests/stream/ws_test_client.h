@@ -114,6 +114,12 @@ class WsTestClient {
   void close() {
     run([&](auto done) { ws_.async_close(websocket::close_code::normal, done); });
   }
+  // A normal close (1000) with `reason` in the close frame.
+  void closeWith(const std::string& reason) {
+    run([&](auto done) {
+      ws_.async_close(websocket::close_reason(websocket::close_code::normal, reason), done);
+    });
+  }
   void drop() {
     beast::error_code ignored;
     ws_.next_layer().close(ignored);
