@@ -401,17 +401,6 @@ std::expected<Unknowns, FisheyeFitFailure> solve(const Observations& obs, int wi
 
 }  // namespace
 
-const char* fisheyeRefusalName(FisheyeRefusal refusal) {
-  switch (refusal) {
-    case FisheyeRefusal::TooFewViews: return "too-few-views";
-    case FisheyeRefusal::BoardNotFound: return "board-not-found";
-    case FisheyeRefusal::NotConverged: return "not-converged";
-    case FisheyeRefusal::ErrorTooHigh: return "error-too-high";
-    case FisheyeRefusal::LensFolds: return "lens-folds";
-  }
-  return "unknown";
-}
-
 std::expected<FisheyeFit, FisheyeFitFailure> fitFisheye(
     std::span<const std::vector<glm::dvec2>> cornersPerView, const Checkerboard& board, int widthPx,
     int heightPx, const FisheyeFitOptions& options) {

@@ -46,8 +46,6 @@ struct FisheyeFit {
 
 enum class FisheyeRefusal { TooFewViews, BoardNotFound, NotConverged, ErrorTooHigh, LensFolds };
 
-[[nodiscard]] const char* fisheyeRefusalName(FisheyeRefusal refusal);
-
 struct FisheyeFitFailure {
   FisheyeRefusal cause;
   std::string message;  // one sentence naming the view and the limit

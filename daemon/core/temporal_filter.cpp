@@ -47,18 +47,6 @@ FilterResult classify(std::optional<std::uint64_t> newestSeq, std::uint64_t seq,
 
 }  // namespace
 
-const char* frameEventName(FrameEvent event) {
-  switch (event) {
-    case FrameEvent::Started: return "started";
-    case FrameEvent::Accepted: return "accepted";
-    case FrameEvent::DuplicateReplaced: return "duplicate replaced";
-    case FrameEvent::GapHeld: return "gap held";
-    case FrameEvent::ResetAfterGap: return "reset after gap";
-    case FrameEvent::StaleRejected: return "stale rejected";
-  }
-  return "?";
-}
-
 TemporalFilter::TemporalFilter(FirTaps taps) : taps_(std::move(taps)), powers_(taps_.size(), 0.0) {}
 
 double TemporalFilter::delayFrames() const { return groupDelayFramesAt(taps_, 0.0); }

@@ -51,8 +51,6 @@ enum class FrameEvent {
   StaleRejected,      // seq < newest: ignored, the state is unchanged
 };
 
-[[nodiscard]] const char* frameEventName(FrameEvent event);
-
 struct FilterResult {
   FrameEvent event = FrameEvent::Started;
   std::uint64_t missedFrames = 0;  // frames missing before this one (GapHeld, ResetAfterGap)

@@ -7,10 +7,6 @@
 
 namespace vem::recording {
 
-bool isKnownRecordType(std::uint16_t type) {
-  return type >= std::uint16_t(RecordType::Header) && type <= std::uint16_t(RecordType::Footer);
-}
-
 std::optional<RecordHeader> parseRecordHeader(std::span<const std::byte> bytes) {
   assert(bytes.size() >= kRecordHeaderBytes);
   if (!std::equal(kRecordMagic.begin(), kRecordMagic.end(), bytes.begin())) return std::nullopt;

@@ -27,8 +27,6 @@ inline constexpr std::size_t kRecordHeaderBytes = 16;
 
 enum class RecordType : std::uint16_t { Header = 1, Frame = 2, Index = 3, Footer = 4 };
 
-[[nodiscard]] bool isKnownRecordType(std::uint16_t type);
-
 struct RecordHeader {
   std::uint16_t type = 0;
   std::uint32_t payloadBytes = 0;

@@ -47,7 +47,6 @@ class CaptureThread {
   [[nodiscard]] bool endOfStream() const { return endOfStream_.load(); }
   [[nodiscard]] bool frameLimitReached() const { return limitReached_.load(); }
   [[nodiscard]] std::uint64_t sourceErrors() const { return sourceErrors_.load(); }
-  [[nodiscard]] std::uint64_t framesDelivered() const { return delivered_.load(); }
   // Why the source gives no frames now: the cause of the current run of failures, EndOfStream
   // once it ended; empty while frames flow (and before the first attempt). Any thread.
   [[nodiscard]] std::optional<SourceErrorCause> failure() const;

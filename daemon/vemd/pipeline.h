@@ -90,7 +90,6 @@ class Pipeline {
   [[nodiscard]] const calib::CameraCalibration& calibration() const { return calibration_; }
   [[nodiscard]] const ProcessingOptions& options() const { return options_; }
   [[nodiscard]] double filterDelayFrames() const { return filter_.delayFrames(); }
-  [[nodiscard]] double validMapFraction() const { return remap_.validFraction(); }
   [[nodiscard]] std::uint64_t lutRebuilds() const { return lutRebuilds_; }
 
  private:

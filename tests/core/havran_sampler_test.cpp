@@ -1,5 +1,6 @@
 // Havran's inverse transform: round trips, bijectivity, continuity (diagonals, seam, pole,
-// equator), chi-square against its own density, and the standard sampler's row jumps it avoids.
+// equator), chi-square against its own density, and the standard sampler's row jumps it avoids;
+// the standard sampler's round trip and density.
 #include "core/havran_sampler.h"
 
 #include <cmath>
@@ -113,6 +114,19 @@ TEST(HavranSampler, StaysContinuousOverAHotPixelOfEightOrdersOfMagnitude) {
   for (glm::dvec2 p : randomSquarePoints(300, 0.01)) {
     const glm::dvec2 offset(0.7e-9, 0.7e-9);
     EXPECT_LT(angleRad(havranSample(t, p).dir, havranSample(t, p + offset).dir), 1e-2);
+  }
+}
+
+// standardSquare is standardSample's inverse (the point of the square a direction comes from):
+// pbrt's rule, each warp beside its inverse, tested by the round trip.
+TEST(StandardSampler, SquareToDirectionToSquareRoundTripsOnEveryMap) {
+  for (const auto& [name, map] : testMaps()) {
+    const SamplingTables t = buildSamplingTables(map);
+    double worst = 0;
+    for (glm::dvec2 p : randomSquarePoints(4000, 1e-3)) {
+      worst = std::max(worst, glm::length(standardSquare(t, standardSample(t, p).dir) - p));
+    }
+    EXPECT_LT(worst, 1e-7) << name << " " << layoutName(map.layout);
   }
 }
 
