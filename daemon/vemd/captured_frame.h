@@ -1,5 +1,5 @@
 // CapturedFrame: one raw frame as a source delivers it to vemd's pipeline, with its identity in
-// time. Sources (replay, synthetic, later cameras) all produce these.
+// time. Sources (replay, synthetic, cameras) all produce these.
 //
 // Conventions: seq increases by one per frame the source produced (gaps mean frames lost before
 // vemd saw them); captureTsNs is the capture instant in nanoseconds on the source's clock (the

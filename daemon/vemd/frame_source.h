@@ -1,5 +1,5 @@
-// FrameSource: where vemd's frames come from (a replayed recording, a synthetic scene, later a
-// camera), behind one interface the capture thread drives.
+// FrameSource: where vemd's frames come from (a replayed recording, a synthetic scene, a camera),
+// behind one interface the capture thread drives.
 //
 // - next() blocks until the next frame is due and returns it, or returns a typed error:
 //   EndOfStream (a recording ran out: the daemon stops), Timeout (no frame in time, or next() was

@@ -1,5 +1,5 @@
 // Sink: where vemd's processed frames go (a JSON-lines light file, the recorder, the preview
-// image, later the network). Sinks run on the processing thread, one after the other, in the
+// image, the stream server). Sinks run on the processing thread, one after the other, in the
 // order configured; a slow sink slows processing (the capture queue then drops the oldest frames,
 // counted) but never the capture thread.
 //

@@ -1,5 +1,5 @@
 // The lights vemd publishes for a processed frame, the same for every sink that shows lights (the
-// JSON-lines file, the preview image, later the network): the temporal filter's output when the
+// JSON-lines file, the preview image, the stream): the temporal filter's output when the
 // frame has one, else the frame's own lights (while the filter fills, after a reset, or with the
 // filter off). The recorder is different: it stores each frame's own lights with the frame, so a
 // replay can check them (recorder_sink.h).
