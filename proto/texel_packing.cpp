@@ -5,10 +5,10 @@
 
 #include <bit>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 
 #include "proto/stream_protocol.h"
+#include "util/contract.h"
 
 namespace vem::stream {
 namespace {
@@ -109,7 +109,7 @@ std::string packTexels(std::span<const float> rgb, int zstdLevel, std::size_t* c
   const std::size_t size =
       ZSTD_compress(packed.data(), packed.size(), raw.data(), raw.size(), zstdLevel);
   // Compressing into a buffer of ZSTD_compressBound bytes cannot fail but for a broken contract.
-  if (ZSTD_isError(size) != 0U) std::abort();
+  VEM_EXPECTS(ZSTD_isError(size) == 0U);
   packed.resize(size);
   return packed;
 }

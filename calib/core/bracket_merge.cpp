@@ -1,9 +1,10 @@
 #include "calib/core/bracket_merge.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <numeric>
+
+#include "util/contract.h"
 
 namespace vem::calib {
 namespace {
@@ -29,16 +30,14 @@ SortedFrames sortByExposure(std::span<const RawFrame> frames, std::span<const Br
 }
 
 void checkInputs(std::span<const RawFrame> frames, std::span<const BracketLut> luts) {
-  assert(!frames.empty() && frames.size() == luts.size());
+  VEM_EXPECTS(!frames.empty() && frames.size() == luts.size());
   for (std::size_t k = 0; k < frames.size(); ++k) {
-    assert(frames[k].width == frames[0].width && frames[k].height == frames[0].height);
-    assert(frames[k].format == frames[0].format);
-    assert(luts[k].channels == frames[k].format.channels);
-    assert(luts[k].size == frames[k].format.maxCode() + 1u);
-    assert(frames[k].codes.size() == frames[0].codes.size());
+    VEM_EXPECTS(frames[k].width == frames[0].width && frames[k].height == frames[0].height);
+    VEM_EXPECTS(frames[k].format == frames[0].format);
+    VEM_EXPECTS(luts[k].channels == frames[k].format.channels);
+    VEM_EXPECTS(luts[k].size == frames[k].format.maxCode() + 1u);
+    VEM_EXPECTS(frames[k].codes.size() == frames[0].codes.size());
   }
-  (void)frames;
-  (void)luts;
 }
 
 // The reading of a sample that no frame weighs (each frame clipped or in the noise floor), and

@@ -1,7 +1,8 @@
 #include "calib/core/bracket_simulation.h"
 
-#include <cassert>
 #include <cmath>
+
+#include "util/contract.h"
 
 namespace vem::calib {
 namespace {
@@ -36,7 +37,7 @@ PhotometricCalibration ldrCameraPhotometric(double scaleCdM2) {
 
 double scaleForCode(const TabulatedResponse& response, int code, double luminanceCdM2,
                     double exposureUs) {
-  assert(code > 0 && std::size_t(code) < response.exposureByCode[0].size());
+  VEM_EXPECTS(code > 0 && std::size_t(code) < response.exposureByCode[0].size());
   return luminanceCdM2 * exposureUs / response.exposureByCode[0][std::size_t(code)];
 }
 

@@ -1,7 +1,6 @@
 #include "calib/core/camera_simulator.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 
@@ -9,6 +8,7 @@
 
 #include "calib/core/camera_orientation.h"
 #include "core/color.h"
+#include "util/contract.h"
 
 namespace vem::calib {
 namespace {
@@ -96,7 +96,7 @@ std::uint16_t SensorResponseSimulator::code(int channel, double luminanceCdM2) {
 
 RawFrame simulateFrame(const RadianceFunction& radiance, const CameraCalibration& calibration,
                        const SimulationOptions& options) {
-  assert(calibration.lens && calibration.photometric);
+  VEM_EXPECTS(calibration.lens && calibration.photometric);
   const KannalaBrandtLens& lens = *calibration.lens;
   const glm::dmat3 worldFromCam = worldFromCamera(calibration.orientation);
   const CameraIdentity& camera = calibration.camera;
@@ -132,7 +132,7 @@ RawFrame simulateFrame(const RadianceFunction& radiance, const CameraCalibration
 RawFrame simulatePatchFrame(std::span<const PatchSpec> patches, double backgroundCdM2,
                             const CameraCalibration& calibration,
                             const SimulationOptions& options) {
-  assert(calibration.photometric);
+  VEM_EXPECTS(calibration.photometric);
   const CameraIdentity& camera = calibration.camera;
   RawFrame frame = RawFrame::blank(camera.sensorWidthPx, camera.sensorHeightPx, camera.pixelFormat);
   frame.exposureUs = options.exposureUs;

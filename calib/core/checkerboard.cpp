@@ -1,7 +1,6 @@
 #include "calib/core/checkerboard.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -9,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
+
+#include "util/contract.h"
 
 namespace vem::calib {
 namespace {
@@ -324,8 +325,7 @@ BoardPose placeView(const PoseCheck& check, double reach, double phiRad, Uniform
     }
     if (best) return *best;
   }
-  assert(false && "no pose fits this board, lens and sensor");
-  return BoardPose{};
+  VEM_UNREACHABLE("no pose fits this board, lens and sensor");
 }
 
 }  // namespace
@@ -348,7 +348,7 @@ glm::dvec3 cameraFromBoardMm(const BoardPose& pose, const glm::dvec3& boardMm) {
 RawFrame simulateBoardView(const Checkerboard& board, const BoardPose& pose,
                            const CameraCalibration& truth, const SimulationOptions& options,
                            double whiteCdM2, double blackCdM2) {
-  assert(truth.lens && truth.photometric);
+  VEM_EXPECTS(truth.lens && truth.photometric);
   const CameraIdentity& camera = truth.camera;
   RawFrame frame = RawFrame::blank(camera.sensorWidthPx, camera.sensorHeightPx, camera.pixelFormat);
   frame.exposureUs = options.exposureUs;

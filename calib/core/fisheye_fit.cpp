@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -12,6 +11,7 @@
 #include <opencv2/core.hpp>
 
 #include "calib/core/board_detection.h"
+#include "util/contract.h"
 
 namespace vem::calib {
 namespace {
@@ -404,7 +404,7 @@ std::expected<Unknowns, FisheyeFitFailure> solve(const Observations& obs, int wi
 std::expected<FisheyeFit, FisheyeFitFailure> fitFisheye(
     std::span<const std::vector<glm::dvec2>> cornersPerView, const Checkerboard& board, int widthPx,
     int heightPx, const FisheyeFitOptions& options) {
-  assert(options.fovDeg > 0.0 && options.fovDeg <= 360.0);
+  VEM_EXPECTS(options.fovDeg > 0.0 && options.fovDeg <= 360.0);
   if (std::optional<FisheyeFitFailure> bad = badInput(cornersPerView, board, options)) {
     return std::unexpected(std::move(*bad));
   }
@@ -417,8 +417,8 @@ std::expected<FisheyeFit, FisheyeFitFailure> fitFisheye(
 std::expected<FisheyeFit, FisheyeFitFailure> fitFisheyeRefined(
     std::span<const RawFrame> frames, std::span<const std::vector<glm::dvec2>> detectedCorners,
     const Checkerboard& board, const FisheyeFitOptions& options) {
-  assert(frames.size() == detectedCorners.size());
-  assert(options.fovDeg > 0.0 && options.fovDeg <= 360.0);
+  VEM_EXPECTS(frames.size() == detectedCorners.size());
+  VEM_EXPECTS(options.fovDeg > 0.0 && options.fovDeg <= 360.0);
   if (std::optional<FisheyeFitFailure> bad = badInput(detectedCorners, board, options)) {
     return std::unexpected(std::move(*bad));
   }

@@ -1,7 +1,6 @@
 #include "calib/core/photometric_model.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <iterator>
 

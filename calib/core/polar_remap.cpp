@@ -1,10 +1,11 @@
 #include "calib/core/polar_remap.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 #include <glm/mat3x3.hpp>
+
+#include "util/contract.h"
 
 namespace vem::calib {
 namespace {
@@ -112,8 +113,8 @@ std::optional<PolarRemap> buildPolarRemap(const KannalaBrandtLens& lens,
 
 void applyPolarRemap(const PolarRemap& remap, const RawFrame& frame, const CodeToLuminanceLut& lut,
                      EnvMap& map) {
-  assert(frame.width == remap.sensorWidth && frame.height == remap.sensorHeight);
-  assert(lut.channels == frame.format.channels && lut.size == frame.format.maxCode() + 1u);
+  VEM_EXPECTS(frame.width == remap.sensorWidth && frame.height == remap.sensorHeight);
+  VEM_EXPECTS(lut.channels == frame.format.channels && lut.size == frame.format.maxCode() + 1u);
   prepareMap(remap, map);
   const std::uint16_t* codes = frame.codes.data();
   const float* table = lut.luminanceCdM2.data();
@@ -130,8 +131,8 @@ void applyPolarRemap(const PolarRemap& remap, const RawFrame& frame, const CodeT
 
 void applyPolarRemap(const PolarRemap& remap, std::span<const float> luminanceCdM2, int channels,
                      EnvMap& map) {
-  assert(luminanceCdM2.size() ==
-         std::size_t(remap.sensorWidth) * std::size_t(remap.sensorHeight) * std::size_t(channels));
+  VEM_EXPECTS(luminanceCdM2.size() == std::size_t(remap.sensorWidth) *
+                                          std::size_t(remap.sensorHeight) * std::size_t(channels));
   prepareMap(remap, map);
   const float* values = luminanceCdM2.data();
   if (channels == 1) {

@@ -1,7 +1,6 @@
 #include "client/embree/reference_renderer.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -17,6 +16,7 @@
 #include "core/cube_map.h"
 #include "core/sampling_tables.h"
 #include "core/standard_sampler.h"
+#include "util/contract.h"
 
 namespace vem::embree {
 namespace {
@@ -155,7 +155,7 @@ render::LinearImage imageOf(const std::vector<PixelState>& pixels, int widthPx, 
 ReferenceResult renderReference(const EmbreeScene& scene, const scene::OrbitCamera& camera,
                                 int widthPx, int heightPx, const EnvMap& map,
                                 const ReferenceOptions& options) {
-  assert(map.pixelCount() > 0 && options.samplesPerPass >= 1);
+  VEM_EXPECTS(map.pixelCount() > 0 && options.samplesPerPass >= 1);
   const Environment env{map, buildSamplingTables(map)};
   const Context c{scene, env, options, widthPx};
   std::vector<PixelState> pixels(std::size_t(widthPx) * std::size_t(heightPx));

@@ -1,27 +1,20 @@
 #include "client/gl/light_textures.h"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "core/cube_map_lookup.h"
+#include "util/contract.h"
 
 namespace vem::gl {
 namespace {
-
-void check(bool ok, const char* what) {
-  if (ok) return;
-  std::fprintf(stderr, "vem_gl LightTextures: broken contract: %s\n", what);
-  std::abort();
-}
 
 GlTexture regionCube(const AngularRegions& regions) {
   GlTexture texture = GlTexture::create();
   glBindTexture(GL_TEXTURE_CUBE_MAP, texture.id());
   const int f = regions.faceSize;
-  check(regions.regionOfTexel.size() == cubeTexelCount(f), "region table size is 6 F^2");
+  VEM_EXPECTS(regions.regionOfTexel.size() == cubeTexelCount(f));  // 6 F^2 regions
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   for (int face = 0; face < kCubeFaceCount; ++face) {
     const std::uint32_t* texels = regions.regionOfTexel.data() + std::size_t(face * f * f);
@@ -73,26 +66,27 @@ LightTextures::LightTextures(const render::LightingGeometry& geometry) {
 
 void LightTextures::upload(const render::ShadingLights& lights) {
   const std::size_t n = lights.diffuse.lights.size();
-  check(lights.shadowSlotOfDiffuse.empty() || lights.shadowSlotOfDiffuse.size() == n,
-        "shadowSlotOfDiffuse has one slot per diffuse light");
+  // One shadow slot per diffuse light, or none.
+  VEM_EXPECTS(lights.shadowSlotOfDiffuse.empty() || lights.shadowSlotOfDiffuse.size() == n);
   diffuse_.lights.upload(std::span<const float>(packLights(lights.diffuse,
                                                            lights.shadowSlotOfDiffuse)));
   diffuseCount_ = int(n);
   diffuseRegions_ = !lights.diffuseLists.offsets.empty();
   if (diffuseRegions_) {
-    check(lights.diffuseLists.offsets.size() == diffuse_.regionCount + 1,
-          "diffuseLists were built on this renderer's diffuse regions");
+    // The lists were built on this renderer's diffuse regions.
+    VEM_EXPECTS(lights.diffuseLists.offsets.size() == diffuse_.regionCount + 1);
     uploadLists(diffuse_.list, diffuse_.offsets, lights.diffuseLists);
   }
   glossy_ = lights.glossy.has_value();
   if (!glossy_) return;
   const GlossyLightSets& sets = *lights.glossy;
-  check(sets.lowLists.offsets.size() == low_.regionCount + 1 &&
-            sets.highLists.offsets.size() == high_.regionCount + 1,
-        "glossy lists were built on this renderer's glossy regions");
-  check(sets.high.lights.size() <= sets.low.lights.size(), "H is a prefix of L");
-  check(lights.shadowSlotOfLow.empty() || lights.shadowSlotOfLow.size() == sets.low.lights.size(),
-        "shadowSlotOfLow has one slot per L light");
+  // The lists were built on this renderer's glossy regions; H is a prefix of L; one shadow slot
+  // per L light, or none.
+  VEM_EXPECTS(sets.lowLists.offsets.size() == low_.regionCount + 1 &&
+              sets.highLists.offsets.size() == high_.regionCount + 1);
+  VEM_EXPECTS(sets.high.lights.size() <= sets.low.lights.size());
+  VEM_EXPECTS(lights.shadowSlotOfLow.empty() ||
+              lights.shadowSlotOfLow.size() == sets.low.lights.size());
   low_.lights.upload(std::span<const float>(packLights(sets.low, lights.shadowSlotOfLow)));
   high_.lights.upload(std::span<const float>(packLights(sets.high, lights.shadowSlotOfLow)));
   uploadLists(low_.list, low_.offsets, sets.lowLists);

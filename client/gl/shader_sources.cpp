@@ -1,8 +1,6 @@
 #include "client/gl/shader_sources.h"
 
-#include <cstdio>
-#include <cstdlib>
-#include <string>
+#include "util/contract.h"
 
 namespace vem::gl {
 
@@ -10,8 +8,7 @@ std::string_view shaderSource(std::string_view fileName) {
   for (const EmbeddedShader& shader : embeddedShaders()) {
     if (shader.fileName == fileName) return shader.text;
   }
-  std::fprintf(stderr, "vem_gl: no embedded shader named %s\n", std::string(fileName).c_str());
-  std::abort();
+  VEM_UNREACHABLE("shaderSource: every name asked for is one of shaders/*.glsl");
 }
 
 }  // namespace vem::gl

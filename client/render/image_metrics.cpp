@@ -1,11 +1,10 @@
 #include "client/render/image_metrics.h"
 
-#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "core/color.h"
+#include "util/contract.h"
 
 namespace vem::render {
 
@@ -19,11 +18,7 @@ double ImageError::fractionAbove(double threshold) const {
 }
 
 ImageError compareImages(const LinearImage& rendered, const LinearImage& reference) {
-  if (rendered.widthPx != reference.widthPx || rendered.heightPx != reference.heightPx) {
-    fmt::print(stderr, "compareImages: {} x {} against {} x {}\n", rendered.widthPx,
-               rendered.heightPx, reference.widthPx, reference.heightPx);
-    std::abort();
-  }
+  VEM_EXPECTS(rendered.widthPx == reference.widthPx && rendered.heightPx == reference.heightPx);
   ImageError error;
   double sumDiff2 = 0.0;
   double sumRef2 = 0.0;

@@ -1,13 +1,14 @@
 #include "client/scene/mesh_normals.h"
 
-#include <cassert>
 #include <glm/geometric.hpp>
+
+#include "util/contract.h"
 
 namespace vem::scene {
 
 std::expected<std::vector<glm::vec3>, std::size_t> smoothNormals(
     std::span<const glm::vec3> positions, std::span<const std::uint32_t> indices) {
-  assert(indices.size() % 3 == 0);
+  VEM_EXPECTS(indices.size() % 3 == 0);
   // Accumulate in double: a vertex shared by thousands of tiny triangles keeps its precision.
   std::vector<glm::dvec3> sums(positions.size(), glm::dvec3(0.0));
   std::vector<bool> used(positions.size(), false);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +12,7 @@
 
 #include "core/cube_map_lookup.h"
 #include "core/sphere_points.h"
+#include "util/contract.h"
 
 namespace vem {
 namespace {
@@ -120,7 +120,7 @@ std::uint32_t AngularRegions::regionOf(glm::dvec3 dir) const {
 }
 
 AngularRegions makeAngularRegions(int regionCount, int faceSize) {
-  assert(regionCount >= 1 && faceSize >= 1);
+  VEM_EXPECTS(regionCount >= 1 && faceSize >= 1);
   AngularRegions regions;
   regions.centres = fibonacciSphere(regionCount);
   regions.faceSize = faceSize;
@@ -129,7 +129,7 @@ AngularRegions makeAngularRegions(int regionCount, int faceSize) {
 }
 
 double minCentreSeparationRad(const AngularRegions& regions) {
-  assert(regions.count() >= 2);
+  VEM_EXPECTS(regions.count() >= 2);
   double maxDot = -1.0;
   for (std::size_t i = 0; i < regions.count(); ++i) {
     for (std::size_t j = i + 1; j < regions.count(); ++j) {
@@ -140,7 +140,7 @@ double minCentreSeparationRad(const AngularRegions& regions) {
 }
 
 std::span<const std::uint32_t> RegionLightLists::lightsOf(std::uint32_t region) const {
-  assert(std::size_t(region) + 1 < offsets.size());
+  VEM_EXPECTS(std::size_t(region) + 1 < offsets.size());
   return std::span<const std::uint32_t>(lightIndices)
       .subspan(offsets[region], offsets[region + 1] - offsets[region]);
 }

@@ -1,11 +1,11 @@
 #include "core/cube_map.h"
 
-#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
 
 #include "core/cube_map_lookup.h"
+#include "util/contract.h"
 
 namespace vem {
 namespace {
@@ -85,13 +85,13 @@ CubeMapLevel boxHalved(const CubeMapLevel& above) {
 }  // namespace
 
 glm::vec3 cubeTexelDirection(int face, int facePx, double u, double v) {
-  assert(face >= 0 && face < kCubeFaceCount && facePx >= 1);
+  VEM_EXPECTS(face >= 0 && face < kCubeFaceCount && facePx >= 1);
   const double size = facePx;
   return glm::vec3(directionFromCubeFaceCoord({CubeFace(face), u / size, v / size}));
 }
 
 glm::vec3 sampleEnvMapBilinear(const EnvMap& map, glm::dvec3 dir) {
-  assert(map.width > 0 && map.height > 0 && map.rgb.size() == map.pixelCount() * 3);
+  VEM_EXPECTS(map.width > 0 && map.height > 0 && map.rgb.size() == map.pixelCount() * 3);
   if (map.layout == MapLayout::Hemisphere && dir.y < 0.0) return glm::vec3(0.0F);
   const double horizontal = std::hypot(dir.x, dir.z);
   const double thetaRad = std::atan2(horizontal, dir.y);
@@ -111,7 +111,7 @@ glm::vec3 sampleEnvMapBilinear(const EnvMap& map, glm::dvec3 dir) {
 }
 
 CubeMap cubeMapFromEnvMap(const EnvMap& map, int facePx, int levels) {
-  assert(facePx >= 1 && levels >= 1);
+  VEM_EXPECTS(facePx >= 1 && levels >= 1);
   CubeMap cube;
   cube.levels.reserve(std::size_t(levels));
   CubeMapLevel& base = cube.levels.emplace_back();

@@ -1,9 +1,10 @@
 #include "core/cube_map_lookup.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
+
+#include "util/contract.h"
 
 namespace vem {
 namespace {
@@ -41,7 +42,7 @@ int texelCoord(double unit, int faceSize) {
 }  // namespace
 
 CubeFaceCoord cubeFaceCoordOf(glm::dvec3 dir) {
-  assert(dir.x != 0.0 || dir.y != 0.0 || dir.z != 0.0);
+  VEM_EXPECTS(dir.x != 0.0 || dir.y != 0.0 || dir.z != 0.0);
   const CubeFace face = majorFace(dir);
   const FaceAxes axes = faceAxes(face, dir);
   return {face, 0.5 * (axes.sc / axes.ma + 1.0), 0.5 * (axes.tc / axes.ma + 1.0)};
@@ -97,7 +98,7 @@ std::size_t cubeTexelIndex(const CubeTexel& texel, int faceSize) {
 }
 
 CubeTexel cubeTexelFromIndex(std::size_t index, int faceSize) {
-  assert(index < cubeTexelCount(faceSize));
+  VEM_EXPECTS(index < cubeTexelCount(faceSize));
   const std::size_t size = std::size_t(faceSize);
   return {CubeFace(index / (size * size)), int(index % size), int((index / size) % size)};
 }

@@ -1,8 +1,9 @@
 #include "core/env_map.h"
 
-#include <cassert>
 #include <cmath>
 #include <numbers>
+
+#include "util/contract.h"
 
 namespace vem {
 
@@ -22,13 +23,13 @@ EnvMap EnvMap::filled(MapLayout layout, int width, int height, glm::vec3 value) 
 }
 
 glm::vec3 EnvMap::at(int x, int y) const {
-  assert(x >= 0 && x < width && y >= 0 && y < height);
+  VEM_EXPECTS(x >= 0 && x < width && y >= 0 && y < height);
   const std::size_t i = 3 * (std::size_t(y) * std::size_t(width) + std::size_t(x));
   return {rgb[i], rgb[i + 1], rgb[i + 2]};
 }
 
 void EnvMap::set(int x, int y, glm::vec3 value) {
-  assert(x >= 0 && x < width && y >= 0 && y < height);
+  VEM_EXPECTS(x >= 0 && x < width && y >= 0 && y < height);
   const std::size_t i = 3 * (std::size_t(y) * std::size_t(width) + std::size_t(x));
   rgb[i] = value.x;
   rgb[i + 1] = value.y;

@@ -9,6 +9,8 @@
 
 #include <liquid/liquid.h>  // after <complex>: liquid then uses std::complex<double>
 
+#include "util/contract.h"
+
 namespace vem {
 namespace {
 
@@ -161,7 +163,7 @@ FirTaps presetTaps(FilterPreset preset) {
     case FilterPreset::Equiripple5: return designLowPass(kEquiripple5Spec).value();
     case FilterPreset::MinPhase9: return minimumPhase(presetTaps(FilterPreset::Paper9)).value();
   }
-  std::abort();  // unreachable: every enumerator is handled above
+  VEM_UNREACHABLE("presetTaps: every FilterPreset is handled above");
 }
 
 const char* presetName(FilterPreset preset) {

@@ -1,8 +1,9 @@
 #include "core/glossy_light_sets.h"
 
-#include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
+
+#include "util/contract.h"
 
 namespace vem {
 namespace {
@@ -19,7 +20,7 @@ double cosineTo(glm::dvec3 unitDir, const Light& light) {
 }  // namespace
 
 GlossyRegions makeGlossyRegions(const GlossyRegionsParams& params) {
-  assert(params.lowRegionCount >= 2);
+  VEM_EXPECTS(params.lowRegionCount >= 2);
   GlossyRegions regions;
   regions.high = makeAngularRegions(params.highRegionCount, params.faceSize);
   regions.low = makeAngularRegions(params.lowRegionCount, params.faceSize);
@@ -29,7 +30,7 @@ GlossyRegions makeGlossyRegions(const GlossyRegionsParams& params) {
 
 LightSet highLightSet(const LightSet& low, std::size_t highCount) {
   const std::size_t lowCount = low.lights.size();
-  assert(highCount <= lowCount && (highCount > 0 || lowCount == 0));
+  VEM_EXPECTS(highCount <= lowCount && (highCount > 0 || lowCount == 0));
   LightSet high{{}, low.luminanceSr, low.black};
   if (highCount == 0) return high;
   const float scale = float(double(lowCount) / double(highCount));
@@ -52,7 +53,7 @@ std::vector<GlossyShadingLight> glossyLightsFor(glm::dvec3 reflectedDir,
                                                 const GlossyLightSets& sets,
                                                 const GlossyRegions& regions,
                                                 std::size_t maxConeLights) {
-  assert(maxConeLights >= 1);
+  VEM_EXPECTS(maxConeLights >= 1);
   const glm::dvec3 r = glm::normalize(reflectedDir);
   const double cosHalfAngle = std::cos(regions.coneHalfAngleRad);
   std::vector<GlossyShadingLight> out;

@@ -1,13 +1,13 @@
 #include "core/irradiance.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 
 #include "core/color.h"
 #include "core/sampling_tables.h"
+#include "util/contract.h"
 
 namespace vem {
 
@@ -40,7 +40,7 @@ std::vector<glm::dvec3> irradianceFromLights(std::span<const Light> lights,
 
 double relativeRmsError(std::span<const glm::dvec3> estimate,
                         std::span<const glm::dvec3> reference) {
-  assert(estimate.size() == reference.size());
+  VEM_EXPECTS(estimate.size() == reference.size());
   double errorSq = 0;
   double referenceSq = 0;
   for (std::size_t i = 0; i < estimate.size(); ++i) {

@@ -1,13 +1,14 @@
 #include "core/light_clustering.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <nanoflann.hpp>
 #include <numbers>
 #include <utility>
+
+#include "util/contract.h"
 
 namespace vem {
 namespace {
@@ -126,7 +127,7 @@ class GreedyClustering {
 }  // namespace
 
 double clusterRadiusRad(const ClusteringParams& params) {
-  assert(params.clusterBudget >= 1 && params.correctionFactor > 0.0);
+  VEM_EXPECTS(params.clusterBudget >= 1 && params.correctionFactor > 0.0);
   const double share =
       coveredSolidAngleSr(params.layout) / (std::numbers::pi * params.clusterBudget);
   // share >= 1: one disc already has to cover the whole map, so one cluster takes every light.
@@ -139,7 +140,7 @@ Clustering clusterLights(const LightSet& lights, const ClusteringParams& params)
 }
 
 Clustering clusterLightsWithinRadius(const LightSet& lights, double radiusRad) {
-  assert(radiusRad >= 0.0 && radiusRad <= std::numbers::pi);
+  VEM_EXPECTS(radiusRad >= 0.0 && radiusRad <= std::numbers::pi);
   Clustering out = GreedyClustering(lights, radiusRad).run();
   out.radiusRad = radiusRad;
   return out;

@@ -1,13 +1,13 @@
 #include "core/temporal_filter.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
 #include "core/color.h"
+#include "util/contract.h"
 
 namespace vem {
 namespace {
@@ -52,7 +52,10 @@ TemporalFilter::TemporalFilter(FirTaps taps) : taps_(std::move(taps)), powers_(t
 double TemporalFilter::delayFrames() const { return groupDelayFramesAt(taps_, 0.0); }
 
 FilterResult TemporalFilter::push(std::uint64_t seq, const LightSet& frame) {
-  assert(std::isfinite(frame.luminanceSr) && frame.luminanceSr >= 0.0);
+  VEM_EXPECTS(std::isfinite(frame.luminanceSr) && frame.luminanceSr >= 0.0);
+  // Every light has a direction (filterLight normalises it): checked once here, not per light.
+  VEM_EXPECTS(std::ranges::none_of(
+      frame.lights, [](const Light& light) { return light.dir == glm::vec3(0.0F); }));
   FilterResult result = classify(newestSeq_, seq, taps_.size());
   if (result.event == FrameEvent::StaleRejected) return result;
   // After a long gap every ring restarts anyway (writeHeld); clearing also forgets ids that left.
@@ -82,7 +85,6 @@ Light TemporalFilter::filterLight(std::uint64_t seq, const Light& light, double 
   if (track.dirs.empty()) track.dirs.resize(k);
   const bool lit = framePower > 0.0 && luminance(light.rgb) > 0.0;
   const bool live = track.lastSeq && seq - *track.lastSeq <= k;
-  assert(glm::length(light.dir) > 0.0F);
   const glm::dvec3 dir = (lit || !live) ? glm::normalize(glm::dvec3(light.dir))
                                         : track.dirs[slotOf(*track.lastSeq, k)];
   writeHeld(track.dirs, track.lastSeq, seq, dir);

@@ -1,14 +1,14 @@
 #include "recording/record_format.h"
 
 #include <algorithm>
-#include <cassert>
 
 #include "recording/crc32c.h"
+#include "util/contract.h"
 
 namespace vem::recording {
 
 std::optional<RecordHeader> parseRecordHeader(std::span<const std::byte> bytes) {
-  assert(bytes.size() >= kRecordHeaderBytes);
+  VEM_EXPECTS(bytes.size() >= kRecordHeaderBytes);
   if (!std::equal(kRecordMagic.begin(), kRecordMagic.end(), bytes.begin())) return std::nullopt;
   if (loadLe16(bytes.data() + 6) != 0) return std::nullopt;
   return RecordHeader{loadLe16(bytes.data() + 4), loadLe32(bytes.data() + 8),
@@ -26,7 +26,7 @@ std::uint32_t recordCrc(std::uint16_t type, std::span<const std::byte> payload) 
 void beginRecord(std::vector<std::byte>& out) { out.assign(kRecordHeaderBytes, std::byte{0}); }
 
 void finishRecord(std::vector<std::byte>& out, RecordType type) {
-  assert(out.size() >= kRecordHeaderBytes && out.size() - kRecordHeaderBytes <= UINT32_MAX);
+  VEM_EXPECTS(out.size() >= kRecordHeaderBytes && out.size() - kRecordHeaderBytes <= UINT32_MAX);
   const auto payload = std::span<const std::byte>(out).subspan(kRecordHeaderBytes);
   std::copy(kRecordMagic.begin(), kRecordMagic.end(), out.begin());
   storeLe16(out.data() + 4, std::uint16_t(type));

@@ -1,7 +1,6 @@
 #include "stream/frame_encoding.h"
 
 #include <algorithm>
-#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -11,6 +10,7 @@
 #include "core/cube_map_lookup.h"
 #include "proto/stream_protocol.h"
 #include "proto/texel_packing.h"
+#include "util/contract.h"
 #include "vemd/sinks/published_lights.h"
 
 namespace vem::stream {
@@ -92,7 +92,7 @@ void toneMapInto(const std::vector<glm::vec3>& disc, std::string& bytes) {
 }  // namespace
 
 ServerMessage lightFrameMessage(const vemd::ProcessedFrame& frame, const LightFrameStamp& stamp) {
-  assert(frame.captured != nullptr);
+  VEM_EXPECTS(frame.captured != nullptr);
   const vemd::PublishedLights published = vemd::publishedLights(frame);
   const std::vector<Light>& lights = published.lights->lights;
   ServerMessage message;
@@ -124,7 +124,7 @@ ServerMessage lightFrameMessage(const vemd::ProcessedFrame& frame, const LightFr
 ServerMessage environmentFrameMessage(const CubeMap& cube, std::uint64_t seq,
                                       std::int64_t captureTsNs, std::int64_t publishUnixNs,
                                       int zstdLevel, std::size_t* clampedCount) {
-  assert(!cube.levels.empty());
+  VEM_EXPECTS(!cube.levels.empty());
   std::size_t floats = 0;
   for (const CubeMapLevel& level : cube.levels) {
     for (const std::vector<float>& face : level.faces) floats += face.size();
@@ -133,7 +133,7 @@ ServerMessage environmentFrameMessage(const CubeMap& cube, std::uint64_t seq,
   texels.reserve(floats);
   for (const CubeMapLevel& level : cube.levels) {
     for (const std::vector<float>& face : level.faces) {
-      assert(face.size() == 3 * std::size_t(level.facePx) * std::size_t(level.facePx));
+      VEM_EXPECTS(face.size() == 3 * std::size_t(level.facePx) * std::size_t(level.facePx));
       texels.insert(texels.end(), face.begin(), face.end());
     }
   }
@@ -161,8 +161,8 @@ ServerMessage environmentFrameMessage(const CubeMap& cube, std::uint64_t seq,
 }
 
 void attachPolarPreview(ServerMessage& environment, const EnvMap& polar, int widthPx) {
-  assert(environment.has_environment());
-  assert(widthPx >= 1 && widthPx <= kMaxPreviewWidthPx);
+  VEM_EXPECTS(environment.has_environment());
+  VEM_EXPECTS(widthPx >= 1 && widthPx <= kMaxPreviewWidthPx);
   const std::vector<glm::vec3> disc = sampleDisc(polar, widthPx);
   PolarPreview& preview = *environment.mutable_environment()->mutable_preview();
   preview.set_width_px(std::uint32_t(widthPx));

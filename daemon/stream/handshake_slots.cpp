@@ -1,8 +1,9 @@
 #include "stream/handshake_slots.h"
 
 #include <algorithm>
-#include <cassert>
 #include <tuple>
+
+#include "util/contract.h"
 
 namespace vem::stream {
 
@@ -22,7 +23,7 @@ HandshakeAdmission HandshakeSlots::admit(const std::string& address, std::uint64
         heaviest = it;
       }
     }
-    assert(heaviest != byAddress_.end());
+    VEM_EXPECTS(heaviest != byAddress_.end());
     admission.evict = *heaviest->second.begin();
     erase(*admission.evict);
   }

@@ -1,11 +1,11 @@
 #include "stream/stream_sink.h"
 
 #include <algorithm>
-#include <cassert>
 #include <memory>
 #include <utility>
 
 #include "stream/frame_encoding.h"
+#include "util/contract.h"
 #include "vemd/frame_source.h"
 #include "vemd/sinks/published_lights.h"
 
@@ -28,7 +28,7 @@ StreamSink::StreamSink(StreamServer& server, StreamSinkOptions options)
       worker_(server, CubemapWorkerOptions{options.zstdLevel, options.previewWidthPx}) {}
 
 std::expected<void, vemd::SinkFailure> StreamSink::consume(const vemd::ProcessedFrame& frame) {
-  assert(frame.captured != nullptr);
+  VEM_EXPECTS(frame.captured != nullptr);
   const std::int64_t nowNs = vemd::monotonicNowNs();
   const std::int64_t nowUnixNs = unixNowNs();
   LightFrameStamp stamp;

@@ -1,15 +1,16 @@
 #include "synth/hdri_scene.h"
 
-#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <utility>
+
+#include "util/contract.h"
 
 namespace vem::synth {
 
 HdriScene::HdriScene(const EnvMap& map, std::string mapName, HdriParams params)
     : lookup_(map, params.scale), mapName_(std::move(mapName)), params_(params) {
-  assert(map.width > 0 && map.height > 0);
+  VEM_EXPECTS(map.width > 0 && map.height > 0);
 }
 
 double HdriScene::panAngleRad(double timeS) const {

@@ -1,10 +1,11 @@
 #include "synth/preetham_sky.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 #include <glm/geometric.hpp>
+
+#include "util/contract.h"
 
 namespace vem::synth {
 namespace {
@@ -52,7 +53,7 @@ glm::dvec3 rgbFromXyY(double x, double y, double luminance) {
 }
 
 PreethamSky::PreethamSky(double turbidity) : turbidity_(turbidity) {
-  assert(turbidity >= 1.7 && turbidity <= 10.0);
+  VEM_EXPECTS(turbidity >= 1.7 && turbidity <= 10.0);
   const double t = turbidity;
   // Appendix A.2: the Perez coefficients of Y, x and y.
   perez_[0] = {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771,
@@ -88,7 +89,7 @@ double PreethamSky::perezExact(int quantity, double cosTheta, double gammaRad) c
 
 PreethamSky::SunTerms PreethamSky::sunTerms(const glm::dvec3& sunDir,
                                             double zenithLuminanceCdM2) const {
-  assert(sunDir.y > 0.0);
+  VEM_EXPECTS(sunDir.y > 0.0);
   SunTerms terms;
   terms.sunDir = sunDir;
   terms.zenithLuminanceCdM2 = zenithLuminanceCdM2;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 
@@ -10,6 +9,7 @@
 
 #include "calib/core/camera_orientation.h"
 #include "core/color.h"
+#include "util/contract.h"
 
 namespace vem::synth {
 namespace {
@@ -57,7 +57,7 @@ std::optional<std::string> syntheticCameraProblem(const calib::CameraCalibration
 SyntheticCamera::SyntheticCamera(calib::CameraCalibration calibration,
                                  SyntheticCameraOptions options)
     : calibration_(std::move(calibration)), options_(options) {
-  assert(!syntheticCameraProblem(calibration_));
+  VEM_EXPECTS(!syntheticCameraProblem(calibration_));
   const calib::PhotometricCalibration& photometric = *calibration_.photometric;
   topCode_ = std::uint16_t(
       std::min(double(calibration_.camera.pixelFormat.maxCode()), photometric.saturationCode));

@@ -11,7 +11,6 @@
 //   the counters are exact and read under the same lock.
 #pragma once
 
-#include <cassert>
 #include <chrono>
 #include <condition_variable>
 #include <cstddef>
@@ -20,6 +19,8 @@
 #include <mutex>
 #include <optional>
 #include <utility>
+
+#include "util/contract.h"
 
 namespace vem::vemd {
 
@@ -34,7 +35,7 @@ struct QueueCounters {
 template <typename T>
 class FrameQueue {
  public:
-  explicit FrameQueue(std::size_t capacity) : capacity_(capacity) { assert(capacity >= 1); }
+  explicit FrameQueue(std::size_t capacity) : capacity_(capacity) { VEM_EXPECTS(capacity >= 1); }
 
   FrameQueue(const FrameQueue&) = delete;
   FrameQueue& operator=(const FrameQueue&) = delete;

@@ -1,7 +1,6 @@
 #include "vemd/pipeline.h"
 
 #include <algorithm>
-#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <utility>
@@ -10,6 +9,7 @@
 
 #include "calib/io/camera_file.h"
 #include "core/default_pattern.h"
+#include "util/contract.h"
 
 namespace vem::vemd {
 
@@ -135,9 +135,9 @@ std::optional<std::string> Pipeline::frameProblem(const calib::RawFrame& frame) 
 }
 
 const ProcessedFrame& Pipeline::process(const CapturedFrame& captured) {
-  assert(captured.frame.width == remap_.sensorWidth &&
-         captured.frame.height == remap_.sensorHeight &&
-         captured.frame.format == calibration_.camera.pixelFormat);
+  VEM_EXPECTS(captured.frame.width == remap_.sensorWidth &&
+              captured.frame.height == remap_.sensorHeight &&
+              captured.frame.format == calibration_.camera.pixelFormat);
   result_.captured = &captured;
   StageClock clock;
   calibrate(captured.frame);

@@ -1,14 +1,15 @@
 #include "cameras/bracketing/bracket_grouper.h"
 
-#include <cassert>
 #include <cmath>
 #include <utility>
+
+#include "util/contract.h"
 
 namespace vem::cameras {
 
 BracketGrouper::BracketGrouper(std::vector<double> effectiveExposuresUs, double matchTolerance)
     : exposuresUs_(std::move(effectiveExposuresUs)), tolerance_(matchTolerance) {
-  assert(exposuresUs_.size() >= 2 && tolerance_ > 0.0);
+  VEM_EXPECTS(exposuresUs_.size() >= 2 && tolerance_ > 0.0);
 }
 
 std::optional<std::size_t> BracketGrouper::match(double effectiveExposureUs) const {

@@ -1,9 +1,10 @@
 #include "cameras/bracketing/bracket_settings.h"
 
-#include <cassert>
 #include <cmath>
 
 #include <fmt/format.h>
+
+#include "util/contract.h"
 
 namespace vem::cameras {
 
@@ -43,7 +44,7 @@ std::optional<std::string> bracketSettingsProblem(const BracketSettings& s) {
 }
 
 std::vector<double> bracketExposuresUs(const BracketSettings& settings) {
-  assert(!bracketSettingsProblem(settings));
+  VEM_EXPECTS(!bracketSettingsProblem(settings));
   std::vector<double> exposures;
   for (int k = 0; k < settings.count; ++k) {
     exposures.push_back(settings.baseExposureUs * std::exp2(settings.stopsApart * k));

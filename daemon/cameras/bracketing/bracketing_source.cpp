@@ -1,6 +1,5 @@
 #include "cameras/bracketing/bracketing_source.h"
 
-#include <cassert>
 #include <numeric>
 #include <utility>
 #include <variant>
@@ -8,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "calib/io/camera_file.h"
+#include "util/contract.h"
 
 namespace vem::cameras {
 namespace {
@@ -56,7 +56,7 @@ std::size_t maxFramesWithoutGroup(std::size_t count) { return 4 * count + 8; }
 
 std::expected<std::unique_ptr<BracketingSource>, vemd::SourceError> BracketingSource::create(
     std::unique_ptr<vemd::FrameSource> inner, BracketSettings settings) {
-  assert(inner);
+  VEM_EXPECTS(inner);
   const vemd::SourceDescription description = inner->describe();
   if (auto problem = bracketSettingsProblem(settings)) {
     return std::unexpected(noDevice(fmt::format("{}: {}", description.spec, *problem)));
@@ -214,7 +214,7 @@ void BracketingSource::count(std::size_t frames, BracketDropReason reason) {
 }
 
 void BracketingSource::dropPending(std::size_t frames, BracketDropReason reason) {
-  assert(frames == 0 || frames == pendingFrames_.size());
+  VEM_EXPECTS(frames == 0 || frames == pendingFrames_.size());
   if (frames == 0) return;
   count(frames, reason);
   for (std::size_t i = 0; i < pendingFrames_.size(); ++i) {

@@ -2,10 +2,11 @@
 
 #include <array>
 #include <bit>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+
+#include "util/contract.h"
 
 namespace vem::cameras {
 namespace {
@@ -54,7 +55,7 @@ const calib::BracketLut& lutFor(const calib::RawFrame& frame, std::size_t slot,
 void mergeBracketRadiance(std::span<const calib::RawFrame> frames,
                           const calib::PhotometricCalibration& ldr,
                           const calib::BracketWeighting& weighting, BracketMergeScratch& scratch) {
-  assert(!frames.empty());
+  VEM_EXPECTS(!frames.empty());
   // Slot k serves the k-th frame of every group: in a steady bracket its exposure repeats.
   for (std::size_t k = 0; k < frames.size(); ++k)
     lutFor(frames[k], k, ldr, weighting, scratch.luts);
@@ -63,7 +64,7 @@ void mergeBracketRadiance(std::span<const calib::RawFrame> frames,
 
 VirtualHdrMergeStats encodeVirtualHdr(const calib::MergedBracket& merged,
                                       const VirtualHdrSensor& sensor, calib::RawFrame& out) {
-  assert(merged.channels == sensor.format.channels);
+  VEM_EXPECTS(merged.channels == sensor.format.channels);
   out.width = merged.width;
   out.height = merged.height;
   out.format = sensor.format;

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
+
+#include "util/contract.h"
 
 namespace vem::cameras {
 
@@ -90,22 +90,15 @@ void unpackRow(Row in, const V4l2Layout& layout, Out out) {
       return layout.output.channels == 3 ? yuyvToRgb(in, w, out) : yuyvToY(in, w, out);
     default: break;
   }
-  std::fprintf(stderr, "unpackV4l2Frame: unreadable format %s\n",
-               fourccName(layout.fourcc).c_str());
-  std::abort();
+  VEM_UNREACHABLE("unpackV4l2Frame: the layout's fourcc is one v4l2_formats.h reads");
 }
 
 }  // namespace
 
 void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout,
                      calib::RawFrame& frame) {
-  if (data.size() < layout.minimumBytes() ||
-      layout.bytesPerLine < packedRowBytes(layout.fourcc, layout.widthPx)) {
-    std::fprintf(stderr, "unpackV4l2Frame: %zu bytes at %zu per line for %s %dx%d\n", data.size(),
-                 layout.bytesPerLine, fourccName(layout.fourcc).c_str(), layout.widthPx,
-                 layout.heightPx);
-    std::abort();
-  }
+  VEM_EXPECTS(data.size() >= layout.minimumBytes() &&
+              layout.bytesPerLine >= packedRowBytes(layout.fourcc, layout.widthPx));
   frame.width = layout.widthPx;
   frame.height = layout.heightPx;
   frame.format = layout.output;

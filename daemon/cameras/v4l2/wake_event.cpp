@@ -6,16 +6,17 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
+
+#include "util/contract.h"
 
 namespace vem::cameras {
 
 WakeEvent::WakeEvent() : fd_(::eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK)) {
-  if (!fd_.valid()) {
-    std::fprintf(stderr, "WakeEvent: eventfd failed: %s\n", std::strerror(errno));
-    std::abort();
-  }
+  // eventfd fails only when the process or the system is out of descriptors or memory; the cause
+  // goes out before the contract line.
+  if (!fd_.valid()) std::fprintf(stderr, "WakeEvent: eventfd failed: %s\n", std::strerror(errno));
+  VEM_EXPECTS(fd_.valid());
 }
 
 void WakeEvent::signal() {

@@ -4,12 +4,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cassert>
 #include <cerrno>
 #include <cstring>
 #include <utility>
 
 #include "tools/vemtool/light_json.h"
+#include "util/contract.h"
 #include "vemd/sinks/published_lights.h"
 
 namespace vem::vemd {
@@ -62,7 +62,7 @@ JsonlLightSink::JsonlLightSink(std::filesystem::path path, recording::FileDescri
     : path_(std::move(path)), fd_(std::move(fd)) {}
 
 std::expected<void, SinkFailure> JsonlLightSink::consume(const ProcessedFrame& frame) {
-  assert(frame.captured != nullptr);  // the pipeline always sets it
+  VEM_EXPECTS(frame.captured != nullptr);  // the pipeline always sets it
   if (failed_) return {};
   const std::string text = lightsLineJson(frame, lines_).dump() + '\n';
   std::size_t written = 0;

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -15,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "recording/file_descriptor.h"
+#include "util/contract.h"
 #include "vemd/sinks/published_lights.h"
 
 namespace vem::vemd {
@@ -75,7 +75,8 @@ std::filesystem::path PreviewSink::numberedPath(std::uint64_t seq) const {
 }
 
 std::expected<void, SinkFailure> PreviewSink::consume(const ProcessedFrame& frame) {
-  assert(frame.captured != nullptr && frame.polar != nullptr);  // the pipeline always sets them
+  // The pipeline always sets both.
+  VEM_EXPECTS(frame.captured != nullptr && frame.polar != nullptr);
   if (failed_ || frame.polar->pixelCount() == 0) {
     return {};
   }

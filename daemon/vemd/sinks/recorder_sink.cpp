@@ -1,10 +1,11 @@
 #include "vemd/sinks/recorder_sink.h"
 
-#include <cassert>
 #include <chrono>
 #include <ctime>
 #include <system_error>
 #include <utility>
+
+#include "util/contract.h"
 
 namespace vem::vemd {
 namespace {
@@ -50,7 +51,7 @@ RecorderSink::RecorderSink(std::filesystem::path path, recording::RecordingWrite
     : path_(std::move(path)), writer_(std::move(writer)) {}
 
 std::expected<void, SinkFailure> RecorderSink::consume(const ProcessedFrame& frame) {
-  assert(frame.captured != nullptr);  // the pipeline always sets it
+  VEM_EXPECTS(frame.captured != nullptr);  // the pipeline always sets it
   if (!writer_) return {};
   const CapturedFrame& captured = *frame.captured;
   auto appended =
