@@ -29,6 +29,18 @@ std::expected<std::string, CalibFileFailure> readWholeFile(const std::filesystem
   return text;
 }
 
+CalibFileFailure calibFileFailure(const util::TomlFailure& failure) {
+  switch (failure.cause) {
+    case util::TomlProblem::BadSyntax: return {CalibFileError::BadSyntax, failure.message};
+    case util::TomlProblem::UnknownVersion:
+      return {CalibFileError::UnknownVersion, failure.message};
+    case util::TomlProblem::MissingField: return {CalibFileError::MissingField, failure.message};
+    case util::TomlProblem::WrongUnit: return {CalibFileError::WrongUnit, failure.message};
+    case util::TomlProblem::BadValue: break;
+  }
+  return {CalibFileError::BadValue, failure.message};
+}
+
 std::expected<void, CalibFileFailure> writeWholeFile(const std::filesystem::path& path,
                                                      std::span<const unsigned char> bytes,
                                                      std::string_view kind) {
