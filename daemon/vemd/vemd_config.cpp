@@ -1,11 +1,8 @@
 #include "vemd/vemd_config.h"
 
-#include <arpa/inet.h>
-
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -14,6 +11,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 #include <CLI/CLI.hpp>
+#include <boost/asio/ip/address.hpp>
 
 #include "util/cli_conventions.h"
 #include "util/toml_reader.h"
@@ -526,14 +524,17 @@ std::optional<ListenAddress> parseListenAddress(const std::string& text) {
   if (host.front() == '[') {
     if (host.size() < 3 || host.back() != ']') return std::nullopt;
     host = host.substr(1, host.size() - 2);
-    in6_addr v6{};
-    if (::inet_pton(AF_INET6, host.c_str(), &v6) != 1) return std::nullopt;
-    static const in6_addr kLoopback6 = IN6ADDR_LOOPBACK_INIT;
-    address.loopback = std::memcmp(&v6, &kLoopback6, sizeof v6) == 0;
+    // A literal address only: no scope ("%eth0"), which the listener would not take.
+    if (host.find('%') != std::string::npos) return std::nullopt;
+    boost::system::error_code error;
+    const boost::asio::ip::address_v6 v6 = boost::asio::ip::make_address_v6(host, error);
+    if (error) return std::nullopt;
+    address.loopback = v6.is_loopback();  // ::1
   } else {
-    in_addr v4{};
-    if (::inet_pton(AF_INET, host.c_str(), &v4) != 1) return std::nullopt;
-    address.loopback = (ntohl(v4.s_addr) >> 24) == 127;
+    boost::system::error_code error;
+    const boost::asio::ip::address_v4 v4 = boost::asio::ip::make_address_v4(host, error);
+    if (error) return std::nullopt;
+    address.loopback = v4.is_loopback();  // 127.0.0.0/8
   }
   address.host = std::move(host);
   return address;

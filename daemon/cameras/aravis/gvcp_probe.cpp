@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include <fmt/format.h>
+#include <boost/asio/ip/address_v4.hpp>
 
 #include "util/unique_fd.h"
 
@@ -65,9 +66,10 @@ bool isOurAck(const std::uint8_t* reply, ssize_t size) {
 }  // namespace
 
 std::optional<std::uint32_t> parseIpv4(const std::string& text) {
-  in_addr address{};
-  if (::inet_pton(AF_INET, text.c_str(), &address) != 1) return std::nullopt;
-  return ntohl(address.s_addr);
+  boost::system::error_code error;
+  const boost::asio::ip::address_v4 address = boost::asio::ip::make_address_v4(text, error);
+  if (error) return std::nullopt;
+  return address.to_uint();
 }
 
 std::expected<std::string, std::string> localAddressToward(std::uint32_t deviceAddress) {
