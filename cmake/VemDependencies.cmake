@@ -37,6 +37,7 @@ find_package(OpenSSL REQUIRED)                   # libssl-dev: TLS (wss://) for 
 find_package(tinyobjloader REQUIRED)             # libtinyobjloader-dev: OBJ scenes
 find_package(TinyGLTF REQUIRED)                  # libtinygltf-dev: glTF 2.0 scenes
 find_package(embree 3 REQUIRED)                  # libembree-dev: the CPU (ray-traced) renderer
+find_package(TBB REQUIRED)                       # libtbb-dev (Embree uses it too): its rows in parallel
 find_package(glfw3 REQUIRED)                     # libglfw3-dev: vemview's window
 pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)  # libepoxy-dev: GL and EGL entry points
 pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)      # libegl-dev: headless GL contexts
