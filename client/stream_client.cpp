@@ -26,10 +26,10 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "client/backoff.h"
 #include "client/server_message_decoder.h"
 #include "client/stream_url.h"
 #include "proto/stream_protocol.h"
+#include "util/backoff.h"
 
 namespace vem::client {
 namespace {
@@ -419,7 +419,7 @@ struct StreamClient::Impl {
   }
 
   awaitable<void> run() {
-    Backoff backoff(options.initialBackoff, options.maxBackoff);
+    util::Backoff backoff(options.initialBackoff, options.maxBackoff);
     asio::steady_timer timer(co_await asio::this_coro::executor);
     backoffTimer = &timer;
     while (!stopping) {

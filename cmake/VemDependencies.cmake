@@ -3,6 +3,7 @@ find_package(PkgConfig REQUIRED)
 find_package(glm REQUIRED)                       # libglm-dev: vector maths
 pkg_check_modules(NANOFLANN REQUIRED IMPORTED_TARGET nanoflann)   # libnanoflann-dev: kd-tree
 find_package(OpenEXR REQUIRED)                   # libopenexr-dev: .exr maps
+find_package(Imath REQUIRED)                     # libimath-dev (with OpenEXR): half floats on the wire
 find_package(OpenCV REQUIRED COMPONENTS core imgcodecs imgproc calib3d photo)  # libopencv-dev:
                                                  # map and frame files, calibration maths
 find_package(CLI11 REQUIRED)                     # libcli11-dev: argument parsing
@@ -36,6 +37,7 @@ find_package(OpenSSL REQUIRED)                   # libssl-dev: TLS (wss://) for 
 find_package(tinyobjloader REQUIRED)             # libtinyobjloader-dev: OBJ scenes
 find_package(TinyGLTF REQUIRED)                  # libtinygltf-dev: glTF 2.0 scenes
 find_package(embree 3 REQUIRED)                  # libembree-dev: the CPU (ray-traced) renderer
+find_package(TBB REQUIRED)                       # libtbb-dev (Embree uses it too): its rows in parallel
 find_package(glfw3 REQUIRED)                     # libglfw3-dev: vemview's window
 pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)  # libepoxy-dev: GL and EGL entry points
 pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)      # libegl-dev: headless GL contexts

@@ -4,7 +4,8 @@
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config ccache
-  libglm-dev libnanoflann-dev libopenexr-dev libopencv-dev libcli11-dev nlohmann-json3-dev
+  libglm-dev libnanoflann-dev libopenexr-dev libimath-dev libopencv-dev libcli11-dev
+  nlohmann-json3-dev libtbb-dev
   libspdlog-dev libliquid-dev libtomlplusplus-dev
   libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev libssl-dev
   libsystemd-dev

@@ -1,9 +1,10 @@
 #include "proto/texel_packing.h"
 
+#include <Imath/half.h>
 #include <zstd.h>
 #include <zstd_errors.h>
 
-#include <bit>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -12,35 +13,6 @@
 
 namespace vem::stream {
 namespace {
-
-constexpr std::uint32_t kFloatAbsMask = 0x7FFFFFFFU;
-constexpr std::uint32_t kFloatInfBits = 0x7F800000U;
-constexpr std::uint32_t kMaxHalfAsFloatBits = 0x477FE000U;        // 65504
-constexpr std::uint32_t kMinNormalHalfAsFloatBits = 0x38800000U;  // 2^-14
-constexpr std::uint32_t kHalfOfMinSubnormalBits = 0x33000000U;    // 2^-25: rounds to 0 (tie, even)
-constexpr std::uint16_t kMaxHalfBits = 0x7BFF;
-
-// Rounds `value >> shift` to nearest, ties to even.
-std::uint32_t shiftRoundEven(std::uint32_t value, int shift) {
-  const std::uint32_t kept = value >> shift;
-  const std::uint32_t rest = value & ((1U << shift) - 1U);
-  const std::uint32_t halfway = 1U << (shift - 1);
-  return kept + ((rest > halfway || (rest == halfway && (kept & 1U) != 0)) ? 1U : 0U);
-}
-
-// Half bits of a finite |value| within the half range, given its float bits.
-std::uint16_t halfMagnitude(std::uint32_t absBits) {
-  if (absBits >= kMinNormalHalfAsFloatBits) {
-    // Rebias the exponent (127 -> 15) and round the mantissa from 23 to 10 bits; a carry out of
-    // the mantissa correctly bumps the exponent.
-    return std::uint16_t(shiftRoundEven(absBits - ((127U - 15U) << 23), 13));
-  }
-  if (absBits <= kHalfOfMinSubnormalBits) return 0;
-  // Subnormal half: value = m 2^-24 with m = mantissa24 2^(e - 150 + 24).
-  const std::uint32_t exponent = absBits >> 23;
-  const std::uint32_t mantissa = (absBits & 0x7FFFFFU) | 0x800000U;
-  return std::uint16_t(shiftRoundEven(mantissa, int(126U - exponent)));
-}
 
 struct DeclaredSize {
   bool corrupt = false;
@@ -74,32 +46,23 @@ DeclaredSize declaredSize(std::string_view zstd) {
 }  // namespace
 
 std::uint16_t halfFromFloat(float value) {
-  const std::uint32_t bits = std::bit_cast<std::uint32_t>(value);
-  const std::uint16_t sign = std::uint16_t((bits >> 16) & 0x8000U);
-  const std::uint32_t absBits = bits & kFloatAbsMask;
-  if (absBits > kFloatInfBits) return 0;  // NaN
-  if (absBits > kMaxHalfAsFloatBits) return std::uint16_t(sign | kMaxHalfBits);
-  return std::uint16_t(sign | halfMagnitude(absBits));
+  if (std::isnan(value)) return 0;
+  // Imath rounds to nearest even (subnormals included); clamping first keeps infinities and
+  // values beyond the half range at the largest finite half instead of Imath's infinity.
+  return Imath::half(std::clamp(value, -kMaxHalf, kMaxHalf)).bits();
 }
 
 float floatFromHalf(std::uint16_t half) {
-  const std::uint32_t sign = std::uint32_t(half & 0x8000U) << 16;
-  const std::uint32_t exponent = (half >> 10) & 0x1FU;
-  const std::uint32_t mantissa = half & 0x3FFU;
-  if (exponent == 0) {
-    const float magnitude = std::ldexp(float(mantissa), -24);
-    return sign != 0 ? -magnitude : magnitude;
-  }
-  const std::uint32_t floatExponent = exponent == 0x1FU ? 0xFFU : exponent + (127U - 15U);
-  return std::bit_cast<float>(sign | (floatExponent << 23) | (mantissa << 13));
+  Imath::half value;
+  value.setBits(half);
+  return float(value);
 }
 
 std::string packTexels(std::span<const float> rgb, int zstdLevel, std::size_t* clampedCount) {
   std::string raw(rgb.size() * 2, '\0');
   std::size_t clamped = 0;
   for (std::size_t i = 0; i < rgb.size(); ++i) {
-    const std::uint32_t absBits = std::bit_cast<std::uint32_t>(rgb[i]) & kFloatAbsMask;
-    if (absBits > kMaxHalfAsFloatBits && absBits <= kFloatInfBits) ++clamped;
+    if (std::abs(rgb[i]) > kMaxHalf) ++clamped;  // NaN compares false: not counted
     const std::uint16_t half = halfFromFloat(rgb[i]);
     raw[2 * i] = char(half & 0xFFU);
     raw[2 * i + 1] = char(half >> 8);

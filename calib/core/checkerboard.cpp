@@ -1,4 +1,5 @@
 #include "calib/core/checkerboard.h"
+#include "calib/core/frame_around.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,14 +146,6 @@ class PixelShader {
   double greyCdM2_;
   int supersamples_;
 };
-
-// A right-handed frame whose third column is the unit vector `axis`.
-glm::dmat3 frameAround(const glm::dvec3& axis) {
-  const glm::dvec3 helper =
-      std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-  const glm::dvec3 x = glm::normalize(glm::cross(helper, axis));
-  return glm::dmat3(x, glm::cross(axis, x), axis);
-}
 
 glm::dmat3 rotationAbout(const glm::dvec3& axis, double angleRad) {
   return glm::mat3_cast(glm::angleAxis(angleRad, glm::normalize(axis)));

@@ -12,6 +12,7 @@
 
 #include "calib/core/board_detection.h"
 #include "util/contract.h"
+#include "calib/core/frame_around.h"
 
 namespace vem::calib {
 namespace {
@@ -213,14 +214,6 @@ bool adjust(const Observations& obs, const LensMask& mask, Unknowns& u) {
   const int iterations = solver->run(x);
   packing.unpack(x.ptr<double>(), u);
   return iterations > 0 && iterations < kMaxIterations && cv::checkRange(x);
-}
-
-// A right-handed frame whose third column is the unit vector `axis`.
-glm::dmat3 frameAround(const glm::dvec3& axis) {
-  const glm::dvec3 helper =
-      std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-  const glm::dvec3 x = glm::normalize(glm::cross(helper, axis));
-  return glm::dmat3(x, glm::cross(axis, x), axis);
 }
 
 // The ray of a sensor point through an equidistant lens, not limited to its image circle.

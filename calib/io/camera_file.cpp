@@ -10,14 +10,14 @@
 
 #include "calib/io/camera_file_fields.h"
 #include "calib/io/file_access.h"
-#include "calib/io/toml_reader.h"
+#include "util/toml_reader.h"
 
 namespace vem::calib::io {
 namespace {
 
-using detail::ArrayShape;
-using detail::FieldReader;
-using detail::shortestText;
+using util::ArrayShape;
+using util::shortestText;
+using FieldReader = util::TomlReader;
 
 std::array<double, 3> channelArray(const std::vector<double>& values) {
   std::array<double, 3> out{};
@@ -32,7 +32,7 @@ void readHeader(FieldReader& root) {
   const std::int64_t version = root.integer("version", std::numeric_limits<std::int64_t>::min(),
                                             std::numeric_limits<std::int64_t>::max());
   if (root.ok() && version != kCameraFileVersion)
-    root.fail("version", CalibFileError::UnknownVersion,
+    root.fail("version", util::TomlProblem::UnknownVersion,
               "unknown version " + std::to_string(version) +
                   " (this build of vemcast reads version " + std::to_string(kCameraFileVersion) +
                   ")");
@@ -124,7 +124,7 @@ TabulatedResponse readTableResponse(FieldReader& r, PixelFormat format, ArraySha
                                      ArrayShape{std::size_t(format.maxCode()) + 1, perCode});
   for (std::size_t c = 0; c < curves.size() && r.ok(); ++c) {
     if (const std::optional<std::size_t> code = badTableCode(curves[c]))
-      r.fail("exposure", CalibFileError::BadValue,
+      r.fail("exposure", util::TomlProblem::BadValue,
              "channel " + std::to_string(c) + " is negative or decreases at code " +
                  std::to_string(*code) + " (expected a non-decreasing curve of values >= 0)");
     response.exposureByCode[c] = curves[c];
@@ -151,7 +151,7 @@ PhotometricCalibration readPhotometric(FieldReader r, PixelFormat format,
     r.onlyKeys({"model", "black_level", "saturation", "exposure", "scale", "fit"});
     photometric.response = readTableResponse(r, format, perChannel);
   } else {
-    r.fail("model", CalibFileError::BadValue,
+    r.fail("model", util::TomlProblem::BadValue,
            "expected \"log\", \"linear\" or \"table\", found \"" + model + "\"");
   }
   readLevels(r, format, photometric);
@@ -204,7 +204,7 @@ KannalaBrandtLens readLens(FieldReader r, const CameraIdentity& camera, Geometri
             "expected an angle above 0 and at most 180 deg, found " +
                 shortestText(lens.maxThetaRad * 180.0 / std::numbers::pi) + " deg");
   if (const std::optional<const char*> defect = lensDefect(lens); defect && r.ok())
-    r.fail("k", CalibFileError::BadValue, *defect);
+    r.fail("k", util::TomlProblem::BadValue, *defect);
   quality = readGeometricFit(r.section("fit"));
   return lens;
 }
@@ -235,13 +235,13 @@ CameraCalibration readCalibration(FieldReader& root) {
 
 std::expected<CameraCalibration, CalibFileFailure> parseCameraFile(const std::string& text,
                                                                    const std::string& sourceName) {
-  const auto document = detail::parseToml(text, sourceName);
-  if (!document) return std::unexpected(document.error());
-  detail::ReadStatus status{sourceName, std::nullopt};
+  const auto document = util::parseToml(text, sourceName);
+  if (!document) return std::unexpected(detail::calibFileFailure(document.error()));
+  util::TomlStatus status{sourceName, std::nullopt};
   FieldReader root(*document, "", status);
   readHeader(root);  // first: a newer file is refused for its version, not for its new fields
   CameraCalibration calibration = readCalibration(root);
-  if (!status.ok()) return std::unexpected(*status.failure);
+  if (!status.ok()) return std::unexpected(detail::calibFileFailure(*status.failure));
   return calibration;
 }
 

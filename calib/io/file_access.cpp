@@ -3,7 +3,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "mapio/atomic_file.h"
+#include "util/atomic_file.h"
 
 namespace vem::calib::io::detail {
 
@@ -29,14 +29,26 @@ std::expected<std::string, CalibFileFailure> readWholeFile(const std::filesystem
   return text;
 }
 
+CalibFileFailure calibFileFailure(const util::TomlFailure& failure) {
+  switch (failure.cause) {
+    case util::TomlProblem::BadSyntax: return {CalibFileError::BadSyntax, failure.message};
+    case util::TomlProblem::UnknownVersion:
+      return {CalibFileError::UnknownVersion, failure.message};
+    case util::TomlProblem::MissingField: return {CalibFileError::MissingField, failure.message};
+    case util::TomlProblem::WrongUnit: return {CalibFileError::WrongUnit, failure.message};
+    case util::TomlProblem::BadValue: break;
+  }
+  return {CalibFileError::BadValue, failure.message};
+}
+
 std::expected<void, CalibFileFailure> writeWholeFile(const std::filesystem::path& path,
                                                      std::span<const unsigned char> bytes,
                                                      std::string_view kind) {
-  const auto written = mapio::detail::replaceFileAtomically(path, bytes);
+  const auto written = util::replaceFileAtomically(path, std::as_bytes(bytes));
   if (written) return {};
   return std::unexpected(fileFailure(CalibFileError::WriteFailed, path,
                                      "cannot write the " + std::string(kind) + " (" +
-                                         written.error() +
+                                         written.error().reason() +
                                          "), so any earlier file there is unchanged"));
 }
 

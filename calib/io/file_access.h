@@ -9,12 +9,16 @@
 #include <string_view>
 
 #include "calib/io/calib_file_failure.h"
+#include "util/toml_failure.h"
 
 namespace vem::calib::io::detail {
 
 // "<path>: <what>" as a failure.
 [[nodiscard]] CalibFileFailure fileFailure(CalibFileError cause, const std::filesystem::path& path,
                                            std::string_view what);
+
+// A TOML reader's failure (util/toml_reader.h) as a calibration file's, same cause and sentence.
+[[nodiscard]] CalibFileFailure calibFileFailure(const util::TomlFailure& failure);
 
 // The whole file; `kind` names what it should be in messages ("camera file").
 [[nodiscard]] std::expected<std::string, CalibFileFailure> readWholeFile(

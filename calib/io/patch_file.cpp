@@ -3,13 +3,13 @@
 #include <set>
 
 #include "calib/io/file_access.h"
-#include "calib/io/toml_reader.h"
 #include "calib/io/toml_writer.h"
+#include "util/toml_reader.h"
 
 namespace vem::calib::io {
 namespace {
 
-using detail::FieldReader;
+using FieldReader = util::TomlReader;
 
 constexpr std::string_view kUnitPx = "px";
 constexpr std::string_view kUnitLuminance = "cd/m2";
@@ -50,16 +50,16 @@ PatchSpec readPatch(FieldReader r) {
   readRegion(r, patch);
   patch.luminanceCdM2 = r.quantity("luminance", kUnitLuminance);
   r.require(patch.luminanceCdM2 > 0.0, "luminance",
-            "expected a luminance above 0, found " + detail::shortestText(patch.luminanceCdM2));
+            "expected a luminance above 0, found " + util::shortestText(patch.luminanceCdM2));
   patch.check = r.boolean("check", false);
   return patch;
 }
 
 std::expected<std::vector<PatchSpec>, CalibFileFailure> parsePatchFile(const std::string& text,
                                                                        const std::string& source) {
-  const auto document = detail::parseToml(text, source);
-  if (!document) return std::unexpected(document.error());
-  detail::ReadStatus status{source, std::nullopt};
+  const auto document = util::parseToml(text, source);
+  if (!document) return std::unexpected(detail::calibFileFailure(document.error()));
+  util::TomlStatus status{source, std::nullopt};
   FieldReader root(*document, "", status);
   root.onlyKeys({"patch"});
   const toml::array* tables = root.tableArray("patch");
@@ -72,7 +72,7 @@ std::expected<std::vector<PatchSpec>, CalibFileFailure> parsePatchFile(const std
     patch.require(!status.ok() || names.insert(patches.back().name).second, "name",
                   "the name is used by an earlier patch too (expected unique names)");
   }
-  if (!status.ok()) return std::unexpected(*status.failure);
+  if (!status.ok()) return std::unexpected(detail::calibFileFailure(*status.failure));
   return patches;
 }
 

@@ -12,6 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "calib/io/file_access.h"
+#include "util/quiet_std_err.h"
 
 namespace vem::calib::io {
 namespace {
@@ -19,21 +20,6 @@ namespace {
 using detail::fileFailure;
 
 enum class ImageType { Png, Tiff, Pgm, Ppm };
-
-// OpenCV 4.6's imdecode prints its own line to std::cerr when a file fails to decode; our error
-// value says it in one sentence. This keeps std::cerr quiet for one call (files are read from one
-// thread). The same guard as vem_mapio's OpenCV codec.
-class QuietStdErr {
- public:
-  QuietStdErr() : saved_(std::cerr.rdbuf(sink_.rdbuf())) {}
-  ~QuietStdErr() { std::cerr.rdbuf(saved_); }
-  QuietStdErr(const QuietStdErr&) = delete;
-  QuietStdErr& operator=(const QuietStdErr&) = delete;
-
- private:
-  std::ostringstream sink_;
-  std::streambuf* saved_;
-};
 
 std::expected<ImageType, CalibFileFailure> imageTypeOf(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
@@ -116,7 +102,7 @@ std::expected<cv::Mat, CalibFileFailure> decode(const std::filesystem::path& pat
   if (type == ImageType::Png)
     if (const std::optional<std::string> defect = pngDefect(bytes)) return fail(*defect);
   try {
-    const QuietStdErr quiet;
+    const util::QuietStdErr quiet;
     const cv::Mat encoded(1, int(bytes.size()), CV_8U, const_cast<char*>(bytes.data()));
     cv::Mat image = cv::imdecode(encoded, cv::IMREAD_UNCHANGED);
     if (image.empty())
@@ -175,7 +161,7 @@ std::expected<std::vector<unsigned char>, std::string> encode(const cv::Mat& ima
     std::vector<unsigned char> bytes;
     if (!cv::imencode(extension, image, bytes))
       return std::unexpected("OpenCV could not encode it");
-    const QuietStdErr quiet;
+    const util::QuietStdErr quiet;
     const cv::Mat back = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
     if (back.size() != image.size() || back.type() != image.type() ||
         cv::norm(back, image, cv::NORM_INF) != 0.0)

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <type_traits>
 
-#include "calib/io/toml_reader.h"
+#include "util/toml_reader.h"
 
 namespace vem::calib::io::detail {
 namespace {
@@ -46,7 +46,7 @@ std::string longRowText(std::span<const double> row) {
 std::string tomlNumber(double value) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  std::string text = shortestText(value);
+  std::string text = util::shortestText(value);
   if (text.find_first_of(".e") == std::string::npos) text += ".0";
   return text;
 }

@@ -16,7 +16,8 @@
 //           mirrorReflectance(n, wo) sampleCubeMap(cube, R)   (unoccluded, as the GL renderer).
 // V is an occlusion ray toward the light (1 with shadows off). Pixels whose ray leaves the scene
 // show the cube map in the ray's direction (black without one) and are not covered.
-// Rows are shared by options.threadCount std::threads; the image does not depend on the count.
+// Rows are shared by up to options.threadCount of TBB's threads (parallel_rows.h); the image does
+// not depend on the count.
 #pragma once
 
 #include "client/embree/embree_scene.h"

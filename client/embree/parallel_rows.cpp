@@ -1,27 +1,27 @@
 #include "client/embree/parallel_rows.h"
 
-#include <algorithm>
-#include <atomic>
-#include <thread>
-#include <vector>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace vem::embree {
 
 void forEachRow(int heightPx, int threadCount, const std::function<void(int row)>& renderRow) {
-  const int wanted = threadCount > 0 ? threadCount : int(std::thread::hardware_concurrency());
-  const int count = std::clamp(wanted, 1, std::max(heightPx, 1));
-  std::atomic<int> next{0};
-  const auto work = [&] {
-    for (int row = next.fetch_add(1); row < heightPx; row = next.fetch_add(1)) {
-      renderRow(row);
-    }
+  if (heightPx <= 0) return;
+  const auto rows = [&] {
+    // One row per task: rows differ a lot in cost (sky against geometry), so TBB's work stealing
+    // balances them.
+    tbb::parallel_for(tbb::blocked_range<int>(0, heightPx, 1),
+                      [&](const tbb::blocked_range<int>& range) {
+                        for (int row = range.begin(); row < range.end(); ++row) renderRow(row);
+                      });
   };
-  std::vector<std::jthread> helpers;
-  helpers.reserve(std::size_t(count - 1));
-  for (int i = 1; i < count; ++i) {
-    helpers.emplace_back(work);
+  if (threadCount <= 0) {
+    rows();
+    return;
   }
-  work();
+  tbb::task_arena arena(threadCount);
+  arena.execute(rows);
 }
 
 }  // namespace vem::embree

@@ -4,8 +4,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "mapio/atomic_file.h"
 #include "mapio/map_file.h"
+#include "util/atomic_file.h"
 
 namespace vem::render {
 
@@ -41,11 +41,11 @@ std::expected<void, std::string> saveSrgbPng(std::span<const std::uint8_t> srgb8
   } catch (const cv::Exception& e) {
     return std::unexpected(fmt::format("{}: cannot encode the PNG ({})", path.string(), e.what()));
   }
-  if (auto done = mapio::detail::replaceFileAtomically(path, bytes); !done) {
+  if (auto done = util::replaceFileAtomically(path, std::as_bytes(std::span(bytes))); !done) {
     return std::unexpected(
         fmt::format("{}: cannot write the PNG ({}), so any earlier file there "
                     "is unchanged",
-                    path.string(), done.error()));
+                    path.string(), done.error().reason()));
   }
   return {};
 }

@@ -4,10 +4,10 @@
 #include <cctype>
 #include <fstream>
 
-#include "mapio/atomic_file.h"
 #include "mapio/exr_codec.h"
 #include "mapio/map_codec.h"
 #include "mapio/opencv_codec.h"
+#include "util/atomic_file.h"
 
 namespace vem::mapio {
 namespace {
@@ -106,10 +106,10 @@ std::expected<void, MapFileFailure> saveMap(const EnvMap& map, const std::filesy
   if (!bytes)
     return std::unexpected(fileFailure(MapFileError::WriteFailed, path,
                                        "cannot encode the map (" + bytes.error() + ")"));
-  if (auto done = detail::replaceFileAtomically(path, *bytes); !done)
-    return std::unexpected(fileFailure(
-        MapFileError::WriteFailed, path,
-        "cannot write the map (" + done.error() + "), so any earlier file there is unchanged"));
+  if (auto done = util::replaceFileAtomically(path, std::as_bytes(std::span(*bytes))); !done)
+    return std::unexpected(fileFailure(MapFileError::WriteFailed, path,
+                                       "cannot write the map (" + done.error().reason() +
+                                           "), so any earlier file there is unchanged"));
   return {};
 }
 

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <utility>
 
+#include "util/quiet_std_err.h"
+
 namespace vem::mapio::detail {
 namespace {
 
@@ -59,21 +61,6 @@ RgbImage rgbFromBgr(const cv::Mat& mat) {
   return image;
 }
 
-// OpenCV 4.6's imread and imdecode print their own line to std::cerr when a file fails to decode
-// (hard-coded, not through its logger); our error value already says it in one sentence. This keeps
-// std::cerr quiet for the scope of one call. Not thread-safe: map files are read from one thread.
-class QuietStdErr {
- public:
-  QuietStdErr() : saved_(std::cerr.rdbuf(sink_.rdbuf())) {}
-  ~QuietStdErr() { std::cerr.rdbuf(saved_); }
-  QuietStdErr(const QuietStdErr&) = delete;
-  QuietStdErr& operator=(const QuietStdErr&) = delete;
-
- private:
-  std::ostringstream sink_;
-  std::streambuf* saved_;
-};
-
 }  // namespace
 
 std::expected<RgbImage, MapFileFailure> readWithOpenCv(const std::filesystem::path& path,
@@ -92,7 +79,7 @@ std::expected<RgbImage, MapFileFailure> readWithOpenCv(const std::filesystem::pa
       return std::unexpected(ok.error());
   cv::Mat mat;
   try {
-    const QuietStdErr quiet;
+    const util::QuietStdErr quiet;
     mat = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
   } catch (const std::exception& e) {
     return fail("the " + name + " data could not be decoded (OpenCV: " + e.what() + ")");
@@ -125,7 +112,7 @@ std::expected<std::vector<unsigned char>, std::string> encodeWithOpenCv(const En
       return std::unexpected(std::string("OpenCV could not encode it as ") + formatName(format));
     // OpenCV 4.6 encodes both through a temporary file and can hand back a truncated buffer when
     // writing it fails (disk full, file size limit): decode the bytes back to be sure.
-    const QuietStdErr quiet;
+    const util::QuietStdErr quiet;
     if (cv::imdecode(bytes, cv::IMREAD_UNCHANGED).size() != bgr.size())
       return std::unexpected(std::string("OpenCV's ") + formatName(format) +
                              " encoding came out truncated");

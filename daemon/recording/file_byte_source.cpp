@@ -14,7 +14,7 @@ namespace vem::recording {
 std::expected<FileByteSource, RecordingFailure> FileByteSource::open(
     const std::filesystem::path& path) {
   const std::string name = util::printable(path.string());
-  FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  util::UniqueFd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (!fd.valid()) {
     const int error = errno;
     if (error == ENOENT) {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "recording/byte_source.h"
-#include "recording/file_descriptor.h"
 #include "recording/recording_failure.h"
+#include "util/unique_fd.h"
 
 namespace vem::recording {
 
@@ -24,8 +24,8 @@ class FileByteSource final : public ByteSource {
   [[nodiscard]] int lastError() const { return lastError_; }
 
  private:
-  FileByteSource(FileDescriptor fd, std::uint64_t size) : fd_(std::move(fd)), size_(size) {}
-  FileDescriptor fd_;
+  FileByteSource(util::UniqueFd fd, std::uint64_t size) : fd_(std::move(fd)), size_(size) {}
+  util::UniqueFd fd_;
   std::uint64_t size_ = 0;
   int lastError_ = 0;
 };

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "util/printable.h"
+#include "util/write_all.h"
 
 namespace vem::recording {
 namespace {
@@ -23,7 +24,7 @@ bool syncData(int fd) {
 
 }  // namespace
 
-RecordingWriter::RecordingWriter(std::filesystem::path path, FileDescriptor fd,
+RecordingWriter::RecordingWriter(std::filesystem::path path, util::UniqueFd fd,
                                  RecordingHeader header, WriterOptions options)
     : path_(std::move(path)),
       name_(util::printable(path_.string())),
@@ -49,7 +50,7 @@ std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
         RecordingFailure{RecordingError::BadHeader, name + ": cannot record: " + problem});
   }
   const int flags = O_WRONLY | O_CREAT | O_CLOEXEC | (options.replaceExisting ? O_TRUNC : O_EXCL);
-  FileDescriptor fd(::open(path.c_str(), flags, 0644));
+  util::UniqueFd fd(::open(path.c_str(), flags, 0644));
   if (!fd.valid()) {
     const int error = errno;
     return std::unexpected(RecordingFailure{
@@ -59,7 +60,7 @@ std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
   }
   RecordingWriter writer(path, std::move(fd), std::move(h), options);
   if (auto written = writer.writeAtEnd(encodeHeaderRecord(writer.header_)); !written) {
-    writer.fd_ = FileDescriptor();
+    writer.fd_ = util::UniqueFd();
     if (!options.replaceExisting) ::unlink(path.c_str());  // ours, and holding no frame
     // No frame can stay readable without a header: say that nothing was recorded.
     return std::unexpected(RecordingFailure{
@@ -68,7 +69,7 @@ std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
   }
   if (!syncData(writer.fd_.get())) {
     const int error = errno;
-    writer.fd_ = FileDescriptor();
+    writer.fd_ = util::UniqueFd();
     return std::unexpected(
         RecordingFailure{RecordingError::WriteFailed,
                          name + ": cannot flush the header (" + errnoText(error) + ")"});
@@ -77,26 +78,16 @@ std::expected<RecordingWriter, RecordingFailure> RecordingWriter::create(
 }
 
 std::expected<void, int> RecordingWriter::writeAtEnd(const std::vector<std::byte>& bytes) {
-  std::size_t done = 0;
-  int error = 0;
-  // One pwrite() for the whole record; the loop only continues a write a signal interrupted
+  // One pwrite() for the whole record; writeAllAt only continues a write a signal interrupted
   // part-way.
-  while (done < bytes.size()) {
-    const ssize_t n =
-        ::pwrite(fd_.get(), bytes.data() + done, bytes.size() - done, off_t(end_ + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      error = n < 0 ? errno : EIO;
-      break;
-    }
-    done += std::size_t(n);
-  }
-  if (error == 0) {
+  const auto written = util::writeAllAt(fd_.get(), bytes, end_);
+  if (written) {
     end_ += bytes.size();
     return {};
   }
-  if (done > 0) (void)::ftruncate(fd_.get(), off_t(end_));  // best effort: drop the partial record
-  return std::unexpected(error);
+  // Best effort: drop the partial record.
+  if (written.error().written > 0) (void)::ftruncate(fd_.get(), off_t(end_));
+  return std::unexpected(written.error().error);
 }
 
 RecordingFailure RecordingWriter::writeFailure(const std::string& what, int error) const {

@@ -21,11 +21,11 @@
 
 #include "calib/core/raw_frame.h"
 #include "core/light.h"
-#include "recording/file_descriptor.h"
 #include "recording/frame_codec.h"
 #include "recording/recording_failure.h"
 #include "recording/recording_header.h"
 #include "recording/recording_index.h"
+#include "util/unique_fd.h"
 
 namespace vem::recording {
 
@@ -62,7 +62,7 @@ class RecordingWriter {
   [[nodiscard]] std::uint64_t bytesWritten() const { return end_; }
 
  private:
-  RecordingWriter(std::filesystem::path path, FileDescriptor fd, RecordingHeader header,
+  RecordingWriter(std::filesystem::path path, util::UniqueFd fd, RecordingHeader header,
                   WriterOptions options);
   // Writes `bytes` after the last complete record; on failure cuts a partial write off again and
   // gives the errno.
@@ -73,7 +73,7 @@ class RecordingWriter {
 
   std::filesystem::path path_;
   std::string name_;  // path_ made printable (util/printable.h), for messages
-  FileDescriptor fd_;
+  util::UniqueFd fd_;
   RecordingHeader header_;
   WriterOptions options_;
   FrameCodec codec_;

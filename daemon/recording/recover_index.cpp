@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "recording/file_descriptor.h"
 #include "recording/recording_index.h"
 #include "recording/recording_reader.h"
 #include "util/printable.h"
+#include "util/unique_fd.h"
+#include "util/write_all.h"
 
 namespace vem::recording {
 namespace {
@@ -27,7 +28,7 @@ RecordingFailure writeFailure(const std::filesystem::path& path, const std::stri
 std::expected<void, RecordingFailure> appendTrailer(const std::filesystem::path& path,
                                                     std::uint64_t expectedSize,
                                                     const std::vector<std::byte>& trailer) {
-  FileDescriptor fd(::open(path.c_str(), O_WRONLY | O_CLOEXEC));
+  util::UniqueFd fd(::open(path.c_str(), O_WRONLY | O_CLOEXEC));
   if (!fd.valid()) return std::unexpected(writeFailure(path, "open the file for writing"));
   struct stat info {};
   if (::fstat(fd.get(), &info) != 0) return std::unexpected(writeFailure(path, "stat the file"));
@@ -38,16 +39,9 @@ std::expected<void, RecordingFailure> appendTrailer(const std::filesystem::path&
                              ": the file changed while it was read (is it still being recorded?); "
                              "nothing was written"});
   }
-  std::size_t done = 0;
-  while (done < trailer.size()) {
-    const ssize_t n = ::pwrite(fd.get(), trailer.data() + done, trailer.size() - done,
-                               off_t(expectedSize + done));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      if (n == 0) errno = EIO;
-      return std::unexpected(writeFailure(path, "append the index"));
-    }
-    done += std::size_t(n);
+  if (auto appended = util::writeAllAt(fd.get(), trailer, expectedSize); !appended) {
+    errno = appended.error().error;
+    return std::unexpected(writeFailure(path, "append the index"));
   }
   if (::fdatasync(fd.get()) != 0) return std::unexpected(writeFailure(path, "flush the index"));
   if (!fd.close()) return std::unexpected(writeFailure(path, "close the file"));

@@ -1,7 +1,8 @@
 #include "stream/handshake_auth.h"
 
+#include <openssl/crypto.h>
+
 #include <cctype>
-#include <cstdint>
 
 namespace vem::stream {
 
@@ -63,14 +64,10 @@ std::optional<std::string> queryToken(std::string_view target) {
 }
 
 bool tokensEqual(std::string_view a, std::string_view b) {
-  // Constant time in the contents (the length of the configured token is not a secret worth
-  // hiding: it is compared first).
+  // Constant time in the contents, through OpenSSL (the length of the configured token is not a
+  // secret worth hiding: it is compared first).
   if (a.size() != b.size()) return false;
-  std::uint8_t difference = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    difference |= std::uint8_t(std::uint8_t(a[i]) ^ std::uint8_t(b[i]));
-  }
-  return difference == 0;
+  return CRYPTO_memcmp(a.data(), b.data(), a.size()) == 0;
 }
 
 HandshakeDecision decideHandshake(const AuthPolicy& policy,

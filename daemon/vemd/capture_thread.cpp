@@ -20,7 +20,7 @@ CaptureThread::CaptureThread(FrameSource& source, FrameQueue<CapturedFrame>& fra
       frames_(frames),
       spares_(spares),
       options_(options),
-      backoff_(options.retryInitial),
+      backoff_(options.retryInitial, options.retryMax),
       thread_([this] { run(); }) {}
 
 CaptureThread::~CaptureThread() {
@@ -65,7 +65,7 @@ void CaptureThread::run() {
       failing_ = false;
       failure_.store(kNoFailure);
       failedAttempts_ = 0;
-      backoff_ = options_.retryInitial;
+      backoff_.reset();
     }
     deliver(std::move(*frame));
     if (options_.maxFrames > 0 && delivered_.load() >= options_.maxFrames) {
@@ -87,8 +87,7 @@ bool CaptureThread::backOff(const SourceError& error) {
     failingCause_ = error.cause;
     failure_.store(int(error.cause));
   }
-  const auto wait = backoff_;
-  backoff_ = std::min(options_.retryMax, backoff_ * 2);
+  const auto wait = backoff_.next();
   const std::int64_t deadline =
       monotonicNowNs() + std::chrono::duration_cast<std::chrono::nanoseconds>(wait).count();
   return backoffWait_.sleepUntil(deadline) && !stop_.load();

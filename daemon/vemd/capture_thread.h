@@ -19,6 +19,7 @@
 #include <optional>
 #include <thread>
 
+#include "util/backoff.h"
 #include "vemd/captured_frame.h"
 #include "vemd/frame_queue.h"
 #include "vemd/frame_source.h"
@@ -74,7 +75,7 @@ class CaptureThread {
   bool failing_ = false;
   SourceErrorCause failingCause_ = SourceErrorCause::Timeout;
   std::uint64_t failedAttempts_ = 0;
-  std::chrono::milliseconds backoff_{0};
+  util::Backoff backoff_;
   std::thread thread_;  // last: starts once everything above is ready
 };
 

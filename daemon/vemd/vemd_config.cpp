@@ -1,11 +1,8 @@
 #include "vemd/vemd_config.h"
 
-#include <arpa/inet.h>
-
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <limits>
 #include <optional>
@@ -14,13 +11,14 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 #include <CLI/CLI.hpp>
+#include <boost/asio/ip/address.hpp>
 
 #include "util/cli_conventions.h"
+#include "util/toml_reader.h"
 
 #include "calib/core/raw_frame.h"
 #include "core/default_pattern.h"
 #include "vemd/config_toml.h"
-#include "vemd/toml_section_reader.h"
 
 namespace vem::vemd {
 
@@ -103,74 +101,75 @@ std::vector<std::string_view> presetNames() {
   return names;
 }
 
-void readSource(TomlSectionReader r, SourceConfig& s) {
-  r.onlyKeys(kSourceKeys);
-  r.text("spec", s.spec);
-  r.parsed("rate", kRateExpected, parseSourceRate, s.rate);
-  r.boolean("loop", s.loop);
-  r.wholeNumber("frames", 0, kMaxFrames, s.frames);
-  r.wholeNumber("queue_depth", 1, kMaxQueueDepth, s.queueDepth, kQueueDepthWhy);
-  r.wholeNumber("retry_initial_ms", 1, 60'000, s.retryInitialMs);
-  r.wholeNumber("retry_max_ms", 1, 600'000, s.retryMaxMs);
-  r.text("camera", s.camera);
-  r.number("noise_code", 0.0, kMaxNoiseCode, s.noiseCode);
-  r.wholeNumber("seed", 0, kMaxFrames, s.seed);
+void readSource(util::TomlReader r, SourceConfig& s) {
+  r.onlyKeys(kSourceKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalText("spec", s.spec);
+  r.optionalParsed("rate", kRateExpected, parseSourceRate, s.rate);
+  r.optionalBoolean("loop", s.loop);
+  r.optionalWholeNumber("frames", 0, kMaxFrames, s.frames);
+  r.optionalWholeNumber("queue_depth", 1, kMaxQueueDepth, s.queueDepth, kQueueDepthWhy);
+  r.optionalWholeNumber("retry_initial_ms", 1, 60'000, s.retryInitialMs);
+  r.optionalWholeNumber("retry_max_ms", 1, 600'000, s.retryMaxMs);
+  r.optionalText("camera", s.camera);
+  r.optionalNumber("noise_code", 0.0, kMaxNoiseCode, s.noiseCode);
+  r.optionalWholeNumber("seed", 0, kMaxFrames, s.seed);
   if (s.retryMaxMs < s.retryInitialMs) {
-    r.fail("retry_max_ms", fmt::format("at least source.retry_initial_ms ({})", s.retryInitialMs),
-           std::to_string(s.retryMaxMs));
+    r.failExpected("retry_max_ms",
+                   fmt::format("at least source.retry_initial_ms ({})", s.retryInitialMs),
+                   std::to_string(s.retryMaxMs));
   }
 }
 
-void readCamera(TomlSectionReader r, CameraConfig& c) {
-  r.onlyKeys(kCameraKeys);
-  r.text("pixel_format", c.pixelFormat);
+void readCamera(util::TomlReader r, CameraConfig& c) {
+  r.onlyKeys(kCameraKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalText("pixel_format", c.pixelFormat);
   if (!c.pixelFormat.empty() && !calib::parsePixelFormat(c.pixelFormat)) {
-    r.fail("pixel_format",
-           "\"\", \"Mono8\", \"Mono10\", \"Mono12\", \"Mono16\", \"RGB8\" ... \"RGB16\"",
-           "the string \"" + c.pixelFormat + "\"");
+    r.failExpected("pixel_format",
+                   "\"\", \"Mono8\", \"Mono10\", \"Mono12\", \"Mono16\", \"RGB8\" ... \"RGB16\"",
+                   "the string \"" + c.pixelFormat + "\"");
   }
-  r.wholeNumber("width_px", 0, kMaxSensorSide, c.widthPx);
-  r.wholeNumber("height_px", 0, kMaxSensorSide, c.heightPx);
-  r.number("exposure_us", 0.0, kMaxExposureUs, c.exposureUs);
-  r.number("gain", 0.0, kMaxGain, c.gain);
-  r.number("frame_rate_hz", 0.0, 10000.0, c.frameRateHz);
-  r.wholeNumber("buffers", 2, 64, c.buffers);
-  r.wholeNumber("timeout_ms", 1, 600'000, c.timeoutMs);
+  r.optionalWholeNumber("width_px", 0, kMaxSensorSide, c.widthPx);
+  r.optionalWholeNumber("height_px", 0, kMaxSensorSide, c.heightPx);
+  r.optionalNumber("exposure_us", 0.0, kMaxExposureUs, c.exposureUs);
+  r.optionalNumber("gain", 0.0, kMaxGain, c.gain);
+  r.optionalNumber("frame_rate_hz", 0.0, 10000.0, c.frameRateHz);
+  r.optionalWholeNumber("buffers", 2, 64, c.buffers);
+  r.optionalWholeNumber("timeout_ms", 1, 600'000, c.timeoutMs);
 }
 
-void readBracketing(TomlSectionReader r, BracketingConfig& b) {
-  r.onlyKeys(kBracketingKeys);
-  r.wholeNumber("count", 0, 9, b.count);
-  if (b.count == 1) r.fail("count", "0 (off) or 2 to 9", "1");
-  r.number("stops", 0.5, 8.0, b.stops);
-  r.number("base_exposure_us", 1.0, 1e7, b.baseExposureUs);
-  r.number("match_tolerance", 0.001, 0.5, b.matchTolerance);
+void readBracketing(util::TomlReader r, BracketingConfig& b) {
+  r.onlyKeys(kBracketingKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalWholeNumber("count", 0, 9, b.count);
+  if (b.count == 1) r.failExpected("count", "0 (off) or 2 to 9", "1");
+  r.optionalNumber("stops", 0.5, 8.0, b.stops);
+  r.optionalNumber("base_exposure_us", 1.0, 1e7, b.baseExposureUs);
+  r.optionalNumber("match_tolerance", 0.001, 0.5, b.matchTolerance);
 }
 
-void readProcessing(TomlSectionReader r, ProcessingOptions& p) {
-  r.onlyKeys(kProcessingKeys);
-  r.wholeNumber("map_width", kMinMapSide, kMaxMapWidth, p.mapWidth, kMapSizeWhy);
-  r.wholeNumber("map_height", kMinMapSide, kMaxMapHeight, p.mapHeight, kMapSizeWhy);
-  r.wholeNumber("lights", 1, std::int64_t(kMaxLights), p.lightCount);
+void readProcessing(util::TomlReader r, ProcessingOptions& p) {
+  r.onlyKeys(kProcessingKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalWholeNumber("map_width", kMinMapSide, kMaxMapWidth, p.mapWidth, kMapSizeWhy);
+  r.optionalWholeNumber("map_height", kMinMapSide, kMaxMapHeight, p.mapHeight, kMapSizeWhy);
+  r.optionalWholeNumber("lights", 1, std::int64_t(kMaxLights), p.lightCount);
   std::size_t sampler = p.sampler == SamplerKind::Havran ? 0 : 1;
-  r.choice("sampler", kSamplerNames, sampler);
+  r.optionalChoice("sampler", kSamplerNames, sampler);
   p.sampler = kSamplers[sampler];
 }
 
-void readFilter(TomlSectionReader r, ProcessingOptions& p) {
-  r.onlyKeys(kFilterKeys);
+void readFilter(util::TomlReader r, ProcessingOptions& p) {
+  r.onlyKeys(kFilterKeys, util::UnknownKeyWords::KeyOrSection);
   std::size_t preset = 0;
   while (kAllPresets[preset] != p.filter) ++preset;
-  r.choice("preset", presetNames(), preset);
+  r.optionalChoice("preset", presetNames(), preset);
   p.filter = kAllPresets[preset];
 }
 
-void readClustering(TomlSectionReader r, ProcessingOptions& p) {
-  r.onlyKeys(kClusteringKeys);
-  r.boolean("enabled", p.clustering);
-  r.wholeNumber("budget", 1, kMaxClusterBudget, p.clusterBudget);
-  r.number("correction_factor", kMinCorrectionFactor, kMaxCorrectionFactor,
-           p.clusterCorrectionFactor);
+void readClustering(util::TomlReader r, ProcessingOptions& p) {
+  r.onlyKeys(kClusteringKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalBoolean("enabled", p.clustering);
+  r.optionalWholeNumber("budget", 1, kMaxClusterBudget, p.clusterBudget);
+  r.optionalNumber("correction_factor", kMinCorrectionFactor, kMaxCorrectionFactor,
+                   p.clusterCorrectionFactor);
 }
 
 // The largest preview_scale for `mapWidth` x `mapHeight` maps (at least 1: maps are at most
@@ -191,93 +190,94 @@ std::optional<std::string> previewScaleExpected(const OutputConfig& o, const Pro
       most, p.mapWidth, p.mapHeight, kMaxPreviewSidePx);
 }
 
-void readOutput(TomlSectionReader r, OutputConfig& o, const ProcessingOptions& p) {
-  r.onlyKeys(kOutputKeys);
-  r.text("dir", o.dir);
-  r.text("jsonl", o.jsonl);
-  r.text("record", o.record);
-  r.wholeNumber("record_sync_every", 0, kMaxEvery, o.recordSyncEvery);
-  r.wholeNumber("preview_every", 0, kMaxEvery, o.previewEvery);
-  r.boolean("preview_numbered", o.previewNumbered);
-  r.wholeNumber("preview_scale", 1, kMaxPreviewScale, o.previewScale);
-  r.boolean("allow_missing", o.allowMissing);
+void readOutput(util::TomlReader r, OutputConfig& o, const ProcessingOptions& p) {
+  r.onlyKeys(kOutputKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalText("dir", o.dir);
+  r.optionalText("jsonl", o.jsonl);
+  r.optionalText("record", o.record);
+  r.optionalWholeNumber("record_sync_every", 0, kMaxEvery, o.recordSyncEvery);
+  r.optionalWholeNumber("preview_every", 0, kMaxEvery, o.previewEvery);
+  r.optionalBoolean("preview_numbered", o.previewNumbered);
+  r.optionalWholeNumber("preview_scale", 1, kMaxPreviewScale, o.previewScale);
+  r.optionalBoolean("allow_missing", o.allowMissing);
   if (auto expected = previewScaleExpected(o, p)) {
-    r.fail("preview_scale", *expected, std::to_string(o.previewScale));
+    r.failExpected("preview_scale", *expected, std::to_string(o.previewScale));
   }
 }
 
-void readStats(TomlSectionReader r, StatsConfig& s) {
-  r.onlyKeys(kStatsKeys);
-  r.number("every_s", 0.0, kMaxStatsEveryS, s.everyS);
+void readStats(util::TomlReader r, StatsConfig& s) {
+  r.onlyKeys(kStatsKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalNumber("every_s", 0.0, kMaxStatsEveryS, s.everyS);
 }
 
 // A string of `names` into `out`.
-void readName(TomlSectionReader& r, std::string_view key,
-              const std::vector<std::string_view>& names, std::string& out) {
+void readName(util::TomlReader& r, std::string_view key, const std::vector<std::string_view>& names,
+              std::string& out) {
   std::size_t index = 0;
   while (index < names.size() && names[index] != out) ++index;
-  r.choice(key, names, index);
+  r.optionalChoice(key, names, index);
   if (index < names.size()) out = std::string(names[index]);
 }
 
-void readLog(TomlSectionReader r, LogConfig& l) {
-  r.onlyKeys(kLogKeys);
+void readLog(util::TomlReader r, LogConfig& l) {
+  r.onlyKeys(kLogKeys, util::UnknownKeyWords::KeyOrSection);
   readName(r, "level", kLogLevelNames, l.level);
   readName(r, "format", kLogFormatNames, l.format);
 }
 
-void readStream(TomlSectionReader r, StreamConfig& s) {
-  r.onlyKeys(kStreamKeys);
-  r.boolean("enabled", s.enabled);
-  r.text("listen", s.listen);
+void readStream(util::TomlReader r, StreamConfig& s) {
+  r.onlyKeys(kStreamKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalBoolean("enabled", s.enabled);
+  r.optionalText("listen", s.listen);
   if (!s.listen.empty() && !parseListenAddress(s.listen)) {
-    r.fail("listen", kListenExpected, "the string \"" + s.listen + "\"");
+    r.failExpected("listen", kListenExpected, "the string \"" + s.listen + "\"");
   }
-  r.text("token", s.token);
+  r.optionalText("token", s.token);
   if (!s.token.empty()) {
     if (auto problem = streamTokenProblem(s.token)) {
-      r.fail("token", streamTokenExpected(), *problem);
+      r.failExpected("token", streamTokenExpected(), *problem);
     }
   }
-  r.text("token_file", s.tokenFile);
-  r.text("tls_cert", s.tlsCert);
-  r.text("tls_key", s.tlsKey);
+  r.optionalText("token_file", s.tokenFile);
+  r.optionalText("tls_cert", s.tlsCert);
+  r.optionalText("tls_key", s.tlsKey);
   if (s.tlsCert.empty() != s.tlsKey.empty()) {
-    r.fail(s.tlsCert.empty() ? "tls_cert" : "tls_key",
-           "both stream.tls_cert and stream.tls_key (PEM files), or neither", "only one");
+    r.failExpected(s.tlsCert.empty() ? "tls_cert" : "tls_key",
+                   "both stream.tls_cert and stream.tls_key (PEM files), or neither", "only one");
   }
-  r.wholeNumber("max_clients", 1, 4096, s.maxClients);
-  r.wholeNumber("send_timeout_ms", 100, 600'000, s.sendTimeoutMs);
-  r.wholeNumber("cubemap_zstd_level", 1, 19, s.cubemapZstdLevel);
-  r.text("record_dir", s.recordDir);
-  r.wholeNumber("handshake_timeout_ms", 100, 60'000, s.handshakeTimeoutMs);
-  r.wholeNumber("max_handshakes", 1, 4096, s.maxHandshakes);
-  r.wholeNumber("max_handshakes_per_address", 1, 4096, s.maxHandshakesPerAddress);
-  r.wholeNumber("max_client_lag_ms", 100, 600'000, s.maxClientLagMs);
-  r.wholeNumber("send_buffer_bytes", 4096, 16 * 1024 * 1024, s.sendBufferBytes);
-  r.wholeNumber("cubemap_max_face_px", 64, 512, s.cubemapMaxFacePx);
-  r.number("cubemap_max_rate_hz", 0.0, 60.0, s.cubemapMaxRateHz);
+  r.optionalWholeNumber("max_clients", 1, 4096, s.maxClients);
+  r.optionalWholeNumber("send_timeout_ms", 100, 600'000, s.sendTimeoutMs);
+  r.optionalWholeNumber("cubemap_zstd_level", 1, 19, s.cubemapZstdLevel);
+  r.optionalText("record_dir", s.recordDir);
+  r.optionalWholeNumber("handshake_timeout_ms", 100, 60'000, s.handshakeTimeoutMs);
+  r.optionalWholeNumber("max_handshakes", 1, 4096, s.maxHandshakes);
+  r.optionalWholeNumber("max_handshakes_per_address", 1, 4096, s.maxHandshakesPerAddress);
+  r.optionalWholeNumber("max_client_lag_ms", 100, 600'000, s.maxClientLagMs);
+  r.optionalWholeNumber("send_buffer_bytes", 4096, 16 * 1024 * 1024, s.sendBufferBytes);
+  r.optionalWholeNumber("cubemap_max_face_px", 64, 512, s.cubemapMaxFacePx);
+  r.optionalNumber("cubemap_max_rate_hz", 0.0, 60.0, s.cubemapMaxRateHz);
   if (!s.token.empty() && !s.tokenFile.empty()) {
-    r.fail("token_file", "stream.token or stream.token_file, not both", "both");
+    r.failExpected("token_file", "stream.token or stream.token_file, not both", "both");
   }
   const auto address = parseListenAddress(s.listen);
   if (s.enabled && address && !address->loopback && s.token.empty() && s.tokenFile.empty()) {
-    r.fail("listen",
-           "a loopback address (127.0.0.1, [::1]) unless stream.token or stream.token_file is "
-           "set: listening beyond loopback needs a token",
-           "the string \"" + s.listen + "\"");
+    r.failExpected(
+        "listen",
+        "a loopback address (127.0.0.1, [::1]) unless stream.token or stream.token_file is "
+        "set: listening beyond loopback needs a token",
+        "the string \"" + s.listen + "\"");
   }
 }
 
 // The section `name` of the document, or an empty table when it is absent; a failure when it is
 // not a table.
 const toml::table& section(const toml::table& document, std::string_view name,
-                           TomlSectionReader& top) {
+                           util::TomlReader& top) {
   static const toml::table empty;
   const toml::node* node = document.get(name);
   if (node == nullptr) return empty;
   if (!node->is_table()) {
-    top.fail(name, fmt::format("a table ([{}])", name), describeTomlNode(*node));
+    top.failExpected(name, fmt::format("a table ([{}])", name), util::describeTomlNode(*node));
     return empty;
   }
   return *node->as_table();
@@ -524,14 +524,17 @@ std::optional<ListenAddress> parseListenAddress(const std::string& text) {
   if (host.front() == '[') {
     if (host.size() < 3 || host.back() != ']') return std::nullopt;
     host = host.substr(1, host.size() - 2);
-    in6_addr v6{};
-    if (::inet_pton(AF_INET6, host.c_str(), &v6) != 1) return std::nullopt;
-    static const in6_addr kLoopback6 = IN6ADDR_LOOPBACK_INIT;
-    address.loopback = std::memcmp(&v6, &kLoopback6, sizeof v6) == 0;
+    // A literal address only: no scope ("%eth0"), which the listener would not take.
+    if (host.find('%') != std::string::npos) return std::nullopt;
+    boost::system::error_code error;
+    const boost::asio::ip::address_v6 v6 = boost::asio::ip::make_address_v6(host, error);
+    if (error) return std::nullopt;
+    address.loopback = v6.is_loopback();  // ::1
   } else {
-    in_addr v4{};
-    if (::inet_pton(AF_INET, host.c_str(), &v4) != 1) return std::nullopt;
-    address.loopback = (ntohl(v4.s_addr) >> 24) == 127;
+    boost::system::error_code error;
+    const boost::asio::ip::address_v4 v4 = boost::asio::ip::make_address_v4(host, error);
+    if (error) return std::nullopt;
+    address.loopback = v4.is_loopback();  // 127.0.0.0/8
   }
   address.host = std::move(host);
   return address;
@@ -559,32 +562,26 @@ const std::vector<ConfigSection>& configSchema() {
 
 std::expected<VemdConfig, std::string> parseConfig(const std::string& text,
                                                    const std::string& sourceName) {
-  toml::table document;
-  try {
-    document = toml::parse(text, sourceName);
-  } catch (const toml::parse_error& e) {
-    const auto& begin = e.source().begin;
-    return std::unexpected(fmt::format("{}: line {}, column {}: not valid TOML ({})", sourceName,
-                                       begin.line, begin.column, e.description()));
-  }
-  ConfigStatus status{sourceName, std::nullopt};
+  const auto document = util::parseToml(text, sourceName);
+  if (!document) return std::unexpected(document.error().message);
+  util::TomlStatus status{sourceName, std::nullopt};
   VemdConfig config;
-  TomlSectionReader top(document, "", status);
-  top.onlyKeys(kTopKeys);
+  util::TomlReader top(*document, "", status);
+  top.onlyKeys(kTopKeys, util::UnknownKeyWords::KeyOrSection);
   std::int64_t version = 1;
-  top.wholeNumber("version", 1, 1, version);
-  readSource({section(document, "source", top), "source", status}, config.source);
-  readCamera({section(document, "camera", top), "camera", status}, config.camera);
-  readBracketing({section(document, "bracketing", top), "bracketing", status}, config.bracketing);
-  readProcessing({section(document, "processing", top), "processing", status}, config.processing);
-  readFilter({section(document, "filter", top), "filter", status}, config.processing);
-  readClustering({section(document, "clustering", top), "clustering", status}, config.processing);
-  readOutput({section(document, "output", top), "output", status}, config.output,
+  top.optionalWholeNumber("version", 1, 1, version);
+  readSource({section(*document, "source", top), "source.", status}, config.source);
+  readCamera({section(*document, "camera", top), "camera.", status}, config.camera);
+  readBracketing({section(*document, "bracketing", top), "bracketing.", status}, config.bracketing);
+  readProcessing({section(*document, "processing", top), "processing.", status}, config.processing);
+  readFilter({section(*document, "filter", top), "filter.", status}, config.processing);
+  readClustering({section(*document, "clustering", top), "clustering.", status}, config.processing);
+  readOutput({section(*document, "output", top), "output.", status}, config.output,
              config.processing);
-  readStats({section(document, "stats", top), "stats", status}, config.stats);
-  readLog({section(document, "log", top), "log", status}, config.log);
-  readStream({section(document, "stream", top), "stream", status}, config.stream);
-  if (!status.ok()) return std::unexpected(*status.failure);
+  readStats({section(*document, "stats", top), "stats.", status}, config.stats);
+  readLog({section(*document, "log", top), "log.", status}, config.log);
+  readStream({section(*document, "stream", top), "stream.", status}, config.stream);
+  if (!status.ok()) return std::unexpected(status.failure->message);
   return config;
 }
 

@@ -1,14 +1,11 @@
-// The client's counters: skipped frames from seq gaps, the latency summary and the backoff
-// (client/reception_stats.h, client/backoff.h).
+// The client's counters: skipped frames from seq gaps and the latency summary
+// (client/reception_stats.h). The reconnect backoff is tested with vem_util (tests/util).
 #include <gtest/gtest.h>
 
-#include "client/backoff.h"
 #include "client/reception_stats.h"
 
 namespace vem::client {
 namespace {
-
-using std::chrono::milliseconds;
 
 TEST(ReceptionStats, CountsSeqGapsAsSkipped) {
   ReceptionStats stats;
@@ -36,15 +33,6 @@ TEST(ReceptionStats, LatencyMedianAndP99AreNearestRanksOverTheWindow) {
 
 TEST(ReceptionStats, NoFramesGiveAnEmptyLatency) {
   EXPECT_EQ(ReceptionStats().latency().samples, 0U);
-}
-
-TEST(Backoff, DoublesFromTheInitialDelayUpToTheMaximumAndResets) {
-  Backoff backoff(milliseconds(100), milliseconds(5000));
-  std::vector<long> delays;
-  for (int i = 0; i < 8; ++i) delays.push_back(long(backoff.next().count()));
-  EXPECT_EQ(delays, (std::vector<long>{100, 200, 400, 800, 1600, 3200, 5000, 5000}));
-  backoff.reset();
-  EXPECT_EQ(backoff.next(), milliseconds(100));
 }
 
 }  // namespace

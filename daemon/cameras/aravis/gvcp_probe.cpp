@@ -12,6 +12,9 @@
 #include <cstring>
 
 #include <fmt/format.h>
+#include <boost/asio/ip/address_v4.hpp>
+
+#include "util/unique_fd.h"
 
 namespace vem::cameras {
 
@@ -24,20 +27,10 @@ constexpr std::uint16_t kReadRegAck = 0x0081;
 constexpr std::uint32_t kVersionRegister = 0x0000;
 constexpr std::uint16_t kProbeRequestId = 0x7e11;
 
-// An owned socket fd.
-class UdpSocket {
- public:
-  UdpSocket() : fd_(::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0)) {}
-  UdpSocket(const UdpSocket&) = delete;
-  UdpSocket& operator=(const UdpSocket&) = delete;
-  ~UdpSocket() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  [[nodiscard]] int fd() const { return fd_; }
-
- private:
-  int fd_;
-};
+// A new UDP socket (invalid when socket(2) failed, errno set).
+util::UniqueFd openUdpSocket() {
+  return util::UniqueFd(::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0));
+}
 
 sockaddr_in socketAddress(std::uint32_t address, std::uint16_t port) {
   sockaddr_in sa{};
@@ -52,11 +45,11 @@ std::string dotted(std::uint32_t address) {
                      address & 0xff);
 }
 
-std::expected<void, std::string> connectTo(const UdpSocket& socket, std::uint32_t address) {
-  if (socket.fd() < 0)
+std::expected<void, std::string> connectTo(const util::UniqueFd& socket, std::uint32_t address) {
+  if (!socket.valid())
     return std::unexpected(fmt::format("cannot open a UDP socket: {}", std::strerror(errno)));
   const sockaddr_in sa = socketAddress(address, kGvcpPort);
-  if (::connect(socket.fd(), reinterpret_cast<const sockaddr*>(&sa), sizeof sa) != 0) {
+  if (::connect(socket.get(), reinterpret_cast<const sockaddr*>(&sa), sizeof sa) != 0) {
     return std::unexpected(
         fmt::format("no route to {} ({})", dotted(address), std::strerror(errno)));
   }
@@ -73,19 +66,20 @@ bool isOurAck(const std::uint8_t* reply, ssize_t size) {
 }  // namespace
 
 std::optional<std::uint32_t> parseIpv4(const std::string& text) {
-  in_addr address{};
-  if (::inet_pton(AF_INET, text.c_str(), &address) != 1) return std::nullopt;
-  return ntohl(address.s_addr);
+  boost::system::error_code error;
+  const boost::asio::ip::address_v4 address = boost::asio::ip::make_address_v4(text, error);
+  if (error) return std::nullopt;
+  return address.to_uint();
 }
 
 std::expected<std::string, std::string> localAddressToward(std::uint32_t deviceAddress) {
-  UdpSocket socket;
+  const util::UniqueFd socket = openUdpSocket();
   if (auto connected = connectTo(socket, deviceAddress); !connected) {
     return std::unexpected(connected.error());
   }
   sockaddr_in local{};
   socklen_t size = sizeof local;
-  if (::getsockname(socket.fd(), reinterpret_cast<sockaddr*>(&local), &size) != 0) {
+  if (::getsockname(socket.get(), reinterpret_cast<sockaddr*>(&local), &size) != 0) {
     return std::unexpected(fmt::format("cannot find the local address toward {} ({})",
                                        dotted(deviceAddress), std::strerror(errno)));
   }
@@ -93,7 +87,7 @@ std::expected<std::string, std::string> localAddressToward(std::uint32_t deviceA
 }
 
 std::expected<void, std::string> probeGvcp(std::uint32_t deviceAddress, int waitMs) {
-  UdpSocket socket;
+  const util::UniqueFd socket = openUdpSocket();
   if (auto connected = connectTo(socket, deviceAddress); !connected) {
     return std::unexpected(connected.error());
   }
@@ -109,7 +103,7 @@ std::expected<void, std::string> probeGvcp(std::uint32_t deviceAddress, int wait
                                              (kVersionRegister >> 16) & 0xff,
                                              (kVersionRegister >> 8) & 0xff,
                                              kVersionRegister & 0xff};
-  if (::send(socket.fd(), request.data(), request.size(), 0) < 0) {
+  if (::send(socket.get(), request.data(), request.size(), 0) < 0) {
     return std::unexpected(fmt::format("cannot send to {}:{} ({})", dotted(deviceAddress),
                                        kGvcpPort, std::strerror(errno)));
   }
@@ -118,9 +112,9 @@ std::expected<void, std::string> probeGvcp(std::uint32_t deviceAddress, int wait
   for (;;) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
         deadline - std::chrono::steady_clock::now());
-    pollfd pfd{socket.fd(), POLLIN, 0};
+    pollfd pfd{socket.get(), POLLIN, 0};
     if (left.count() <= 0 || ::poll(&pfd, 1, int(left.count())) <= 0) break;
-    const ssize_t got = ::recv(socket.fd(), reply.data(), reply.size(), 0);
+    const ssize_t got = ::recv(socket.get(), reply.data(), reply.size(), 0);
     if (got < 0 && errno == ECONNREFUSED) break;  // nothing listens on that port
     if (isOurAck(reply.data(), got)) return {};
   }

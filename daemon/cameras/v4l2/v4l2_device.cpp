@@ -8,7 +8,7 @@
 #include <cerrno>
 #include <cstring>
 
-#include "cameras/v4l2/unique_fd.h"
+#include "util/unique_fd.h"
 
 namespace vem::cameras {
 
@@ -18,7 +18,7 @@ constexpr int kMaxEintrRetries = 64;
 
 class SystemV4l2Device final : public V4l2Device {
  public:
-  explicit SystemV4l2Device(UniqueFd fd) : fd_(std::move(fd)) {}
+  explicit SystemV4l2Device(util::UniqueFd fd) : fd_(std::move(fd)) {}
 
   int ioctl(unsigned long request, void* arg) override {
     for (int attempt = 0; attempt < kMaxEintrRetries; ++attempt) {
@@ -51,13 +51,13 @@ class SystemV4l2Device final : public V4l2Device {
   }
 
  private:
-  UniqueFd fd_;
+  util::UniqueFd fd_;
 };
 
 }  // namespace
 
 std::expected<std::unique_ptr<V4l2Device>, int> openSystemV4l2Device(const std::string& path) {
-  UniqueFd fd;
+  util::UniqueFd fd;
   do {
     fd.reset(::open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC));
   } while (!fd.valid() && errno == EINTR);

@@ -3,7 +3,7 @@
 // is never lost; consume() takes every pending signal at once.
 #pragma once
 
-#include "cameras/v4l2/unique_fd.h"
+#include "util/unique_fd.h"
 
 namespace vem::cameras {
 
@@ -17,7 +17,7 @@ class WakeEvent {
   [[nodiscard]] int fd() const { return fd_.get(); }  // readable while a signal is pending
 
  private:
-  UniqueFd fd_;
+  util::UniqueFd fd_;
 };
 
 }  // namespace vem::cameras

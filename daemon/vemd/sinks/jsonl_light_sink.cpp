@@ -10,25 +10,10 @@
 
 #include "tools/vemtool/light_json.h"
 #include "util/contract.h"
+#include "util/write_all.h"
 #include "vemd/sinks/published_lights.h"
 
 namespace vem::vemd {
-namespace {
-
-// Writes all of `text`; the bytes written before an error in `written`, errno as the result.
-int writeAll(int fd, const std::string& text, std::size_t& written) {
-  written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return errno;
-    if (n == 0) return EIO;
-    written += std::size_t(n);
-  }
-  return 0;
-}
-
-}  // namespace
 
 nlohmann::ordered_json lightsLineJson(const ProcessedFrame& frame, std::uint64_t line) {
   const PublishedLights published = publishedLights(frame);
@@ -55,24 +40,24 @@ std::expected<JsonlLightSink, SinkFailure> JsonlLightSink::open(
     return std::unexpected(SinkFailure{"jsonl: cannot open " + path.string() + " for appending (" +
                                        std::strerror(errno) + ")"});
   }
-  return JsonlLightSink(path, recording::FileDescriptor(fd));
+  return JsonlLightSink(path, util::UniqueFd(fd));
 }
 
-JsonlLightSink::JsonlLightSink(std::filesystem::path path, recording::FileDescriptor fd)
+JsonlLightSink::JsonlLightSink(std::filesystem::path path, util::UniqueFd fd)
     : path_(std::move(path)), fd_(std::move(fd)) {}
 
 std::expected<void, SinkFailure> JsonlLightSink::consume(const ProcessedFrame& frame) {
   VEM_EXPECTS(frame.captured != nullptr);  // the pipeline always sets it
   if (failed_) return {};
   const std::string text = lightsLineJson(frame, lines_).dump() + '\n';
-  std::size_t written = 0;
-  if (const int error = writeAll(fd_.get(), text, written); error != 0) {
+  if (auto done = util::writeAll(fd_.get(), std::as_bytes(std::span(text))); !done) {
     // Cut the partial line off again (regular files only; best effort) so the file stays lines.
+    const std::size_t written = done.error().written;
     struct stat st {};
     if (written > 0 && ::fstat(fd_.get(), &st) == 0 && S_ISREG(st.st_mode)) {
       (void)::ftruncate(fd_.get(), st.st_size - off_t(written));
     }
-    return std::unexpected(fail("cannot write line " + std::to_string(lines_), error));
+    return std::unexpected(fail("cannot write line " + std::to_string(lines_), done.error().error));
   }
   ++lines_;
   return {};

@@ -30,7 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "recording/file_descriptor.h"
+#include "util/unique_fd.h"
 #include "vemd/sink.h"
 
 namespace vem::vemd {
@@ -52,11 +52,11 @@ class JsonlLightSink final : public Sink {
   [[nodiscard]] std::uint64_t linesWritten() const { return lines_; }
 
  private:
-  JsonlLightSink(std::filesystem::path path, recording::FileDescriptor fd);
+  JsonlLightSink(std::filesystem::path path, util::UniqueFd fd);
   [[nodiscard]] SinkFailure fail(const std::string& what, int error);
 
   std::filesystem::path path_;
-  recording::FileDescriptor fd_;
+  util::UniqueFd fd_;
   std::uint64_t lines_ = 0;
   bool failed_ = false;
 };

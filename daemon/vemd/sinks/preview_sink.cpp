@@ -1,9 +1,5 @@
 #include "vemd/sinks/preview_sink.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -13,43 +9,11 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "recording/file_descriptor.h"
+#include "util/atomic_file.h"
 #include "util/contract.h"
 #include "vemd/sinks/published_lights.h"
 
 namespace vem::vemd {
-namespace {
-
-std::expected<void, std::string> writeAll(int fd, const std::vector<unsigned char>& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return std::unexpected(std::string(n < 0 ? std::strerror(errno) : "short write"));
-    done += std::size_t(n);
-  }
-  return {};
-}
-
-}  // namespace
-
-std::expected<void, std::string> replaceFileAtomically(const std::filesystem::path& path,
-                                                       const std::vector<unsigned char>& bytes) {
-  // Built by appending: GCC 12 at -O3 warns falsely (-Wrestrict) on "." + std::string + "...".
-  std::string name = ".";
-  name.append(path.filename().string()).append(".XXXXXX");
-  std::string temp = (path.parent_path() / name).string();
-  recording::FileDescriptor fd(::mkostemp(temp.data(), O_CLOEXEC));
-  if (!fd.valid()) return std::unexpected(std::string(std::strerror(errno)));
-  auto written = writeAll(fd.get(), bytes);
-  if (written && ::fchmod(fd.get(), 0644) != 0) written = std::unexpected(std::strerror(errno));
-  if (written && !fd.close()) written = std::unexpected(std::strerror(errno));
-  if (written && ::rename(temp.c_str(), path.c_str()) != 0) {
-    written = std::unexpected(std::strerror(errno));
-  }
-  if (!written) ::unlink(temp.c_str());
-  return written;
-}
 
 std::expected<PreviewSink, SinkFailure> PreviewSink::create(const std::filesystem::path& dir,
                                                             PreviewOptions options) {
@@ -94,10 +58,12 @@ std::expected<void, SinkFailure> PreviewSink::consume(const ProcessedFrame& fram
   std::vector<std::filesystem::path> targets{latestPath()};
   if (options_.numbered) targets.push_back(numberedPath(frame.captured->seq));
   for (const std::filesystem::path& target : targets) {
-    if (auto written = replaceFileAtomically(target, png); !written) {
+    if (auto written = util::replaceFileAtomically(target, std::as_bytes(std::span(png)));
+        !written) {
       failed_ = true;
       return std::unexpected(SinkFailure{"preview: cannot write " + target.string() + " (" +
-                                         written.error() + "); no more previews are written"});
+                                         std::strerror(written.error().error) +
+                                         "); no more previews are written"});
     }
   }
   ++images_;

@@ -51,9 +51,4 @@ class PreviewSink final : public Sink {
   bool failed_ = false;
 };
 
-// Writes `bytes` to `path` atomically: a temporary file beside it, then rename(). Returns the
-// cause (strerror text) on failure, leaving `path` as it was and no temporary file behind.
-[[nodiscard]] std::expected<void, std::string> replaceFileAtomically(
-    const std::filesystem::path& path, const std::vector<unsigned char>& bytes);
-
 }  // namespace vem::vemd

@@ -1,8 +1,8 @@
-#include "client/backoff.h"
+#include "util/backoff.h"
 
 #include <algorithm>
 
-namespace vem::client {
+namespace vem::util {
 
 Backoff::Backoff(std::chrono::milliseconds initial, std::chrono::milliseconds max)
     : initial_(initial), max_(std::max(initial, max)), next_(initial) {}
@@ -15,4 +15,4 @@ std::chrono::milliseconds Backoff::next() {
 
 void Backoff::reset() { next_ = initial_; }
 
-}  // namespace vem::client
+}  // namespace vem::util

@@ -1,11 +1,12 @@
-// Backoff: the delays between a client's connection attempts. Exponential: the first retry waits
-// `initial` (100 ms), each further one twice the last, capped at `max` (5 s); reset() after a
-// connection succeeded starts again from `initial`. Pure value type; not thread-safe.
+// Backoff: the delays between attempts to reach something that failed (a client's connection, a
+// camera that went away). Exponential: the first retry waits `initial`, each further one twice
+// the last, capped at `max`; reset() after a success starts again from `initial`. Pure value type;
+// not thread-safe.
 #pragma once
 
 #include <chrono>
 
-namespace vem::client {
+namespace vem::util {
 
 class Backoff {
  public:
@@ -22,4 +23,4 @@ class Backoff {
   std::chrono::milliseconds next_;
 };
 
-}  // namespace vem::client
+}  // namespace vem::util
