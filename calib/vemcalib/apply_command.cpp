@@ -104,7 +104,7 @@ int runApply(const ApplyOptions& o) {
   return EXIT_SUCCESS;
 }
 
-constexpr const char* kFooter = R"(Example:
+constexpr const char* kApplyFooter = R"(Example:
   vemcalib simulate frame --camera config/camera-example.toml --map ../shared/data/hdri/park.exr \
       --out sky.png
   vemcalib apply --camera config/camera-example.toml --frame sky.png --out sky.exr --mask-out sky-mask.png
@@ -122,7 +122,7 @@ void addApplyCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<ApplyOptions>();
   CLI::App* cmd = app.add_subcommand(
       "apply", "Turn a raw frame into an environment map (cd/m2) with a camera's calibration");
-  cmd->footer(kFooter);
+  cmd->footer(kApplyFooter);
   cmd->add_option("--camera", o->camera, "Camera file with photometric and geometric sections")
       ->required();
   cmd->add_option("--frame", o->frame, "Raw frame: FILE[@EXPOSURE_US] (default 1000 us)")

@@ -164,7 +164,7 @@ int runFisheye(const FisheyeOptions& o) {
   return writeCalibration(o, *inputs, *fit);
 }
 
-constexpr const char* kFooter = R"(Example:
+constexpr const char* kFisheyeFooter = R"(Example:
   vemcalib simulate boards --camera config/camera-example.toml --board 9x6 --square 60 --views 12 --out sim
   vemcalib fisheye --image sim/board-*.png --board 9x6 --square 60 --fov 190 --out sim/camera.toml
 Each --image shows the whole board, printed side toward the camera, with a white margin of about
@@ -183,7 +183,7 @@ void addFisheyeCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<FisheyeOptions>();
   CLI::App* cmd = app.add_subcommand(
       "fisheye", "Fit the fisheye lens (Kannala-Brandt) to images of a checkerboard");
-  cmd->footer(kFooter);
+  cmd->footer(kFisheyeFooter);
   cmd->add_option("--image", o->images, "Images of the checkerboard: FILE ...")->required();
   cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
       ->required()

@@ -189,7 +189,7 @@ int runPhotometric(const PhotometricOptions& o) {
   return writeCalibration(o, *inputs, *fit);
 }
 
-constexpr const char* kFooter = R"(Example:
+constexpr const char* kPhotometricFooter = R"(Example:
   vemcalib simulate patches --camera config/camera-example.toml --out sim
   vemcalib photometric --frame sim/patches-1.png sim/patches-2.png sim/patches-3.png \
       --patches sim/patches.toml --bits 12 --black-level 64 --saturation 4095 --out sim/camera.toml
@@ -209,7 +209,7 @@ void addPhotometricCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<PhotometricOptions>();
   CLI::App* cmd = app.add_subcommand(
       "photometric", "Fit the camera's response to frames of grey patches of known luminance");
-  cmd->footer(kFooter);
+  cmd->footer(kPhotometricFooter);
   cmd->add_option("--frame", o->frames, "Raw frames of the patches: FILE[@EXPOSURE_US] ...")
       ->required();
   cmd->add_option("--patches", o->patches, "Patch list (TOML): regions and luminances")->required();

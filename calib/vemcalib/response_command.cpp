@@ -219,7 +219,7 @@ int runResponse(const ResponseOptions& o) {
                           check.consistency);
 }
 
-constexpr const char* kFooter = R"(Example:
+constexpr const char* kResponseFooter = R"(Example:
   vemcalib simulate brackets --camera truth.toml --map ../shared/data/hdri/lobby.exr \
       --exposures 250,1000,3000,16000 --out brackets
   vemcalib response --bracket brackets/bracket-250.png@250 brackets/bracket-1000.png@1000 \
@@ -244,7 +244,7 @@ void addResponseCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<ResponseOptions>();
   CLI::App* cmd = app.add_subcommand(
       "response", "Recover an LDR camera's response from an exposure bracket (Debevec-Malik)");
-  cmd->footer(kFooter);
+  cmd->footer(kResponseFooter);
   cmd->add_option("--bracket", o->brackets, "Frames of one scene: FILE@EXPOSURE_US ...")
       ->required();
   cmd->add_option("--out", o->out, "Camera file to update or create (TOML)")->required();

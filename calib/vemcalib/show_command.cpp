@@ -33,7 +33,7 @@ int runShow(const ShowOptions& o) {
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
-constexpr const char* kFooter = R"(Example:
+constexpr const char* kShowFooter = R"(Example:
   vemcalib show config/camera-example.toml
 Prints the camera, its photometric response (model, parameters, the luminance range it reads,
 the fit's residuals and date), its lens (field of view, parameters, the fit's reprojection error
@@ -48,7 +48,7 @@ sensor positions of the same directions (pixels) and the directions of the same 
 void addShowCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<ShowOptions>();
   CLI::App* cmd = app.add_subcommand("show", "Check a camera file and print what it holds");
-  cmd->footer(kFooter);
+  cmd->footer(kShowFooter);
   cmd->add_option("CAMERA_FILE", o->path, "Camera file (TOML)")->required();
   cmd->add_option("--compare", o->truthPath,
                   "Print the file beside this truth camera file, with the differences")

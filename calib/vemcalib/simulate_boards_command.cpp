@@ -108,7 +108,7 @@ int runSimulateBoards(const SimulateBoardsOptions& o) {
   return EXIT_SUCCESS;
 }
 
-constexpr const char* kFooter = R"(Example:
+constexpr const char* kSimulateBoardsFooter = R"(Example:
   vemcalib simulate boards --camera config/camera-example.toml --board 9x6 --square 60 --views 12 --out sim
   vemcalib fisheye --image sim/board-*.png --board 9x6 --square 60 --fov 190 --out sim/camera.toml
 Writes DIR/board-00.png, board-01.png ...: the truth camera's views of the board (--board counts
@@ -125,7 +125,7 @@ void addSimulateBoardsCommand(CLI::App& simulate, int& exitCode) {
   auto o = std::make_shared<SimulateBoardsOptions>();
   CLI::App* cmd = simulate.add_subcommand(
       "boards", "Write the views of a checkerboard the truth camera takes, for vemcalib fisheye");
-  cmd->footer(kFooter);
+  cmd->footer(kSimulateBoardsFooter);
   cmd->add_option("--camera", o->camera,
                   "Truth camera file (needs photometric and geometric sections)")
       ->required();

@@ -130,7 +130,7 @@ int runSimulateBrackets(const SimulateBracketsOptions& o) {
   return EXIT_SUCCESS;
 }
 
-constexpr const char* kFooter = R"(Example:
+constexpr const char* kSimulateBracketsFooter = R"(Example:
   vemcalib simulate brackets --camera config/camera-example.toml \
       --map ../shared/data/hdri/lobby.exr --exposures 250,1000,3000,16000 --seed 1 --out brackets
     (prints: brackets/bracket-250.png@250 brackets/bracket-1000.png@1000 ...)
@@ -149,7 +149,7 @@ void addSimulateBracketsCommand(CLI::App& simulate, int& exitCode) {
   auto o = std::make_shared<SimulateBracketsOptions>();
   CLI::App* cmd = simulate.add_subcommand(
       "brackets", "Write the exposure bracket an LDR truth camera takes of an environment map");
-  cmd->footer(kFooter);
+  cmd->footer(kSimulateBracketsFooter);
   cmd->add_option("--camera", o->camera, "Truth camera file (needs its geometric section)")
       ->required();
   cmd->add_option("--map", o->map, "Environment map (.exr, .hdr, .pfm)")->required();

@@ -47,7 +47,8 @@ class VemtoolSubscribeCli : public ::testing::Test {
   // Runs vemtool in the background (the test drives the server meanwhile).
   std::future<CommandRun> start(const std::string& args) const {
     return std::async(std::launch::async, [this, args] {
-      return vem::testing::runCommand(std::string(VEMTOOL_PATH) + " subscribe " + args, dir_);
+      return vem::testing::runCommand(vem::testing::commandLine(VEMTOOL_PATH, "subscribe " + args),
+                                      dir_);
     });
   }
   fs::path dir_;
@@ -159,9 +160,9 @@ TEST_F(VemtoolSubscribeCli, DurationEndsTheRunAndFailsWhenFramesWereMissing) {
   server.send(bytesOf(test::lightFrameMessage(1, 2)));
   const CommandRun r = run.get();
   EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("stopped after 0.5 s (--duration) with 1 of 2 light frames from " +
-                       server.url()),
-            std::string::npos)
+  EXPECT_NE(
+      r.err.find("stopped after 0.5 s (--duration) with 1 of 2 light frames from " + server.url()),
+      std::string::npos)
       << r.err;
 }
 

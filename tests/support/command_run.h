@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <string_view>
 
 #include <sys/wait.h>
 
@@ -26,6 +27,15 @@ struct CommandRun {
 inline std::string readTextFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// `program` then `args`, separated by a space. Built by appending: GCC 12 reports a false
+// -Warray-bounds on std::string(LITERAL) + "..." for some lengths of the literal, and the literal
+// here is a build path, whose length depends on where the project was cloned.
+inline std::string commandLine(std::string_view program, std::string_view args) {
+  std::string line(program);
+  line.append(" ").append(args);
+  return line;
 }
 
 // Runs `commandLine` with its output captured in `dir`, which must exist.

@@ -31,8 +31,7 @@ using vem::testing::CommandRun;
 using vem::testing::readTextFile;
 using namespace vem::calib;
 
-const fs::path kExampleCamera =
-    fs::path(VEM_SOURCE_DIR) / "config/camera-example.toml";
+const fs::path kExampleCamera = fs::path(VEM_SOURCE_DIR) / "config/camera-example.toml";
 
 int lineCount(const std::string& text) { return int(std::count(text.begin(), text.end(), '\n')); }
 
@@ -41,7 +40,7 @@ bool contains(const std::string& text, const std::string& part) {
 }
 
 CommandRun runIn(const fs::path& dir, const std::string& args) {
-  return vem::testing::runCommand(std::string(VEMCALIB_PATH) + " " + args, dir);
+  return vem::testing::runCommand(vem::testing::commandLine(VEMCALIB_PATH, args), dir);
 }
 
 // One chart simulated from the example camera, shared by the tests (simulating takes a second).
@@ -77,7 +76,7 @@ class VemcalibCli : public ::testing::Test {
 
   // `vemcalib photometric` on the chart with the example camera's levels, into dir/OUT.
   [[nodiscard]] CommandRun photometric(const std::string& framesArg, const fs::path& patches,
-                                    const std::string& extra = "") const {
+                                       const std::string& extra = "") const {
     return run("photometric --frame " + framesArg + " --patches " + patches.string() +
                " --bits 12 --black-level 64 --saturation 4095 --out " + out().string() + extra);
   }
@@ -349,13 +348,13 @@ TEST_F(VemcalibCli, ApplyRefusesACameraWithoutLensAndAFrameOfAnotherSize) {
   noLens.lens.reset();
   ASSERT_TRUE(io::saveCameraFile(noLens, dir_ / "nolens.toml"));
   const CommandRun a = run("apply --camera " + (dir_ / "nolens.toml").string() + " --frame " +
-                        sim("patches-1.png").string() + " --out " + (dir_ / "m.exr").string());
+                           sim("patches-1.png").string() + " --out " + (dir_ / "m.exr").string());
   EXPECT_EQ(a.exitCode, 1);
   EXPECT_EQ(lineCount(a.err), 1) << a.err;
   EXPECT_TRUE(contains(a.err, "nolens.toml: the camera has no geometric section")) << a.err;
   ASSERT_TRUE(io::saveRawFrame(RawFrame::blank(64, 48, {3, 12}), dir_ / "small.png"));
   const CommandRun b = run("apply --camera " + kExampleCamera.string() + " --frame " +
-                        (dir_ / "small.png").string() + " --out " + (dir_ / "m.exr").string());
+                           (dir_ / "small.png").string() + " --out " + (dir_ / "m.exr").string());
   EXPECT_EQ(b.exitCode, 1);
   EXPECT_EQ(lineCount(b.err), 1) << b.err;
   EXPECT_TRUE(contains(b.err, "small.png: the frames are 64 x 48 RGB12 but the camera")) << b.err;
@@ -402,7 +401,8 @@ TEST_F(VemcalibCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
     const std::string page = r.out.substr(0, r.out.find_last_not_of('\n') + 1);
     EXPECT_TRUE(page.ends_with(
         "\nExit status: 0 success, 1 failure at run time, 2 usage error (bad flag or value)."))
-        << "vemcalib " << command << " --help:\n" << r.out;
+        << "vemcalib " << command << " --help:\n"
+        << r.out;
   }
 }
 
@@ -417,8 +417,10 @@ TEST_F(VemcalibCli, NoHelpPageShowsTheParsersInternals) {
     ASSERT_EQ(r.exitCode, 0) << command << ": " << r.err;
     for (const char* internal : {"->", "ENUM", "{false}", " OR {", " in [", "POSITIVE"})
       EXPECT_EQ(r.out.find(internal), std::string::npos)
-          << "vemcalib " << command << " --help shows " << internal << ":\n" << r.out;
-    EXPECT_FALSE(std::regex_search(r.out, typeAndValidator)) << "vemcalib " << command << ":\n" << r.out;
+          << "vemcalib " << command << " --help shows " << internal << ":\n"
+          << r.out;
+    EXPECT_FALSE(std::regex_search(r.out, typeAndValidator)) << "vemcalib " << command << ":\n"
+                                                             << r.out;
   }
 }
 
@@ -446,7 +448,8 @@ class VemcalibCompare : public VemcalibCli {
 };
 
 TEST_F(VemcalibCompare, AFileComparedWithItselfDiffersByNothing) {
-  const CommandRun r = run("show " + kExampleCamera.string() + " --compare " + kExampleCamera.string());
+  const CommandRun r =
+      run("show " + kExampleCamera.string() + " --compare " + kExampleCamera.string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(differenceOn(r.out, "luminance, max", " %"), 0.0) << r.out;
   EXPECT_EQ(differenceOn(r.out, "luminance, rms", " %"), 0.0) << r.out;

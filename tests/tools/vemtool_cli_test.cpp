@@ -33,7 +33,7 @@ class VemtoolCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   CommandRun run(const std::string& args) const {
-    return vem::testing::runCommand(std::string(VEMTOOL_PATH) + " " + args, dir_);
+    return vem::testing::runCommand(vem::testing::commandLine(VEMTOOL_PATH, args), dir_);
   }
   fs::path dir_;
 };
@@ -119,7 +119,8 @@ TEST_F(VemtoolCli, NanInfAndNegativePixelsAreCountedInOneWarning) {
 TEST_F(VemtoolCli, ClusterAddsMembersThatCoverEveryLightOnce) {
   vem::EnvMap map = vem::EnvMap::filled(vem::MapLayout::Sphere, 64, 32, glm::vec3(1.0F));
   ASSERT_TRUE(vem::mapio::saveMap(map, dir_ / "grey.pfm"));
-  const CommandRun r = run("lights --in " + (dir_ / "grey.pfm").string() + " --count 64 --cluster 8");
+  const CommandRun r =
+      run("lights --in " + (dir_ / "grey.pfm").string() + " --count 64 --cluster 8");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto frame = nlohmann::json::parse(r.out);
   EXPECT_EQ(frame["clustered_from"], 64);
@@ -138,8 +139,8 @@ TEST_F(VemtoolCli, BadFlagAndBadValueExitTwoNotCli11s105Or106) {
   const std::string in = " --in " + (dir_ / "small.pfm").string();
   for (const std::string& args : std::vector<std::string>{
            "lights" + in + " --count 4 --bogus", "lights" + in + " --count many",
-        "lights" + in + " --count 4 --sampler fancy", "info x.vem --format yaml",
-        "synth --scene sky --frames 0 --out x.vem", "frobnicate"}) {
+           "lights" + in + " --count 4 --sampler fancy", "info x.vem --format yaml",
+           "synth --scene sky --frames 0 --out x.vem", "frobnicate"}) {
     const CommandRun r = run(args);
     EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
     EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
@@ -150,8 +151,8 @@ TEST_F(VemtoolCli, BadFlagAndBadValueExitTwoNotCli11s105Or106) {
 TEST_F(VemtoolCli, MissingInputFileIsAFailureAtRunTimeExitOne) {
   for (const std::string& args : std::vector<std::string>{
            "info " + (dir_ / "nothere.vem").string(),
-                                  "export " + (dir_ / "nothere.vem").string() + " --frame 0 --out x.exr",
-                                  "recover " + (dir_ / "nothere.vem").string()}) {
+           "export " + (dir_ / "nothere.vem").string() + " --frame 0 --out x.exr",
+           "recover " + (dir_ / "nothere.vem").string()}) {
     const CommandRun r = run(args);
     EXPECT_EQ(r.exitCode, 1) << args << ": " << r.err;
     EXPECT_EQ(lineCount(r.err), 1) << args << ": " << r.err;
@@ -167,7 +168,8 @@ TEST_F(VemtoolCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
     const std::string page = r.out.substr(0, r.out.find_last_not_of('\n') + 1);
     EXPECT_TRUE(page.ends_with(
         "\nExit status: 0 success, 1 failure at run time, 2 usage error (bad flag or value)."))
-        << "vemtool " << command << " --help:\n" << r.out;
+        << "vemtool " << command << " --help:\n"
+        << r.out;
   }
 }
 
@@ -181,8 +183,10 @@ TEST_F(VemtoolCli, NoHelpPageShowsTheParsersInternals) {
     ASSERT_EQ(r.exitCode, 0) << command << ": " << r.err;
     for (const char* internal : {"->", "ENUM", "{false}", " OR {", " in [", "POSITIVE"})
       EXPECT_EQ(r.out.find(internal), std::string::npos)
-          << "vemtool " << command << " --help shows " << internal << ":\n" << r.out;
-    EXPECT_FALSE(std::regex_search(r.out, typeAndValidator)) << "vemtool " << command << ":\n" << r.out;
+          << "vemtool " << command << " --help shows " << internal << ":\n"
+          << r.out;
+    EXPECT_FALSE(std::regex_search(r.out, typeAndValidator)) << "vemtool " << command << ":\n"
+                                                             << r.out;
   }
 }
 

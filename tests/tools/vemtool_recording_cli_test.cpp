@@ -32,7 +32,7 @@ using vem::testing::CommandRun;
 class VemtoolRecordingCli : public vem::testing::RecordingFiles {
  protected:
   CommandRun run(const std::string& args) const {
-    return vem::testing::runCommand(std::string(VEMTOOL_PATH) + " " + args, dir_);
+    return vem::testing::runCommand(vem::testing::commandLine(VEMTOOL_PATH, args), dir_);
   }
 };
 

@@ -51,7 +51,7 @@ class VemtoolSynthCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_.parent_path()); }
 
   CommandRun run(const std::string& args) const {
-    return vem::testing::runCommand(std::string(VEMTOOL_PATH) + " " + args, logs_);
+    return vem::testing::runCommand(vem::testing::commandLine(VEMTOOL_PATH, args), logs_);
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   // The names in the work folder (temporary files included: they start with a dot).
@@ -110,7 +110,8 @@ TEST_F(VemtoolSynthCli, SynthRecordsNFramesAtTheRateThatInfoReports) {
 }
 
 TEST_F(VemtoolSynthCli, SynthCreatesTheFolderOfItsOutput) {
-  const CommandRun r = run("synth --scene sky --frames 1 --rate 30 --out " + path("runs/a/sky.vem"));
+  const CommandRun r =
+      run("synth --scene sky --frames 1 --rate 30 --out " + path("runs/a/sky.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(fs::is_regular_file(dir_ / "runs" / "a" / "sky.vem"));
 }
@@ -174,8 +175,8 @@ TEST_F(VemtoolSynthCli, ExportRawWritesTheRecordedCodesBitForBit) {
 }
 
 TEST_F(VemtoolSynthCli, ImportRecordsEachSharedHdriAsAFrame) {
-  const CommandRun r = run("import --in " + kHdri + "park.exr " + kHdri + "sky.exr --rate 10 --out " +
-                        path("two.vem"));
+  const CommandRun r = run("import --in " + kHdri + "park.exr " + kHdri +
+                           "sky.exr --rate 10 --out " + path("two.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("2 frames from 2 files at 10 Hz"), std::string::npos) << r.out;
   const CommandRun i = run("info " + path("two.vem") + " --format json");
@@ -193,7 +194,8 @@ TEST_F(VemtoolSynthCli, ImportRecordsEachSharedHdriAsAFrame) {
 }
 
 TEST_F(VemtoolSynthCli, ImportExpandsAQuotedPatternInSortedOrder) {
-  const CommandRun r = run("import --in '" + kHdri + "su*.exr' --rate 30 --out " + path("suns.vem"));
+  const CommandRun r =
+      run("import --in '" + kHdri + "su*.exr' --rate 30 --out " + path("suns.vem"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("2 frames from 2 files"), std::string::npos) << r.out;  // sunrise, sunset
 }

@@ -40,9 +40,7 @@ class VemdCli : public VemdFiles {
   }
   // Small maps keep the runs fast; flags come after it and override.
   fs::path smallConfig() const { return dir_ / "small.toml"; }
-  std::string vemd() const {
-    return std::string(VEMD_PATH) + " --config " + smallConfig().string();
-  }
+  std::string vemd() const { return commandLine(VEMD_PATH, "--config " + smallConfig().string()); }
 
   // `args` after --config small.toml, or alone when `withSmallConfig` is false.
   CommandRun run(const std::string& args, bool withSmallConfig = true) const {

@@ -26,7 +26,7 @@ class VemviewProcessTest : public ::testing::Test {
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
   CommandRun run(const std::string& prefix, const std::string& args) const {
-    return runCommand(prefix + std::string(VEMVIEW_PATH) + " " + args, dir_);
+    return runCommand(prefix + vem::testing::commandLine(VEMVIEW_PATH, args), dir_);
   }
   [[nodiscard]] std::string path(const std::string& name) const { return (dir_ / name).string(); }
 

@@ -47,7 +47,7 @@ class VemviewStream : public ::testing::Test {
   }
   int runVemview(const std::string& args) {
     const CommandRun r =
-        runCommand(std::string(VEMVIEW_PATH) + " --connect " + url_ + " " + args, dir_);
+        runCommand(vem::testing::commandLine(VEMVIEW_PATH, "--connect " + url_ + " " + args), dir_);
     err_ = r.err;
     return r.exitCode;
   }
@@ -91,9 +91,10 @@ TEST_F(VemviewStream, GlossySceneSubscribesToTheCubeMaps) {
 
 TEST_F(VemviewStream, UnreachableDaemonIsOneSentenceAfterTheTimeout) {
   // Port 1 on loopback: nothing listens, the client keeps retrying until the timeout.
-  const CommandRun r = runCommand(
-      std::string(VEMVIEW_PATH) + " --connect ws://127.0.0.1:1 --headless --timeout 1 --frames 1",
-      dir_);
+  const CommandRun r =
+      runCommand(vem::testing::commandLine(
+                     VEMVIEW_PATH, "--connect ws://127.0.0.1:1 --headless --timeout 1 --frames 1"),
+                 dir_);
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.err.find("no lights arrived within 1 s"), std::string::npos) << r.err;
 }

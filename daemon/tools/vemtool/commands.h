@@ -3,6 +3,8 @@
 // input with one clear sentence on stderr and sets a non-zero exit code through `exitCode`.
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace vem::tool {
@@ -15,5 +17,8 @@ void addSynthCommand(CLI::App& app, int& exitCode);    // synth_command.cpp
 void addExportCommand(CLI::App& app, int& exitCode);   // export_command.cpp
 void addImportCommand(CLI::App& app, int& exitCode);   // import_command.cpp
 void addSubscribeCommand(CLI::App& app, int& exitCode);  // subscribe_command.cpp
+
+// Logs `message` (one sentence) as an error and returns the failure exit status (main.cpp).
+[[nodiscard]] int fail(const std::string& message);
 
 }  // namespace vem::tool

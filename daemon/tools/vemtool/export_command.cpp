@@ -33,10 +33,6 @@ struct ExportOptions {
   MapLayout layout = MapLayout::Hemisphere;
 };
 
-int fail(const std::string& message) {
-  spdlog::error("{}", message);
-  return EXIT_FAILURE;
-}
 
 // Frame `seq` of the recording, or why it cannot be read.
 std::expected<recording::RecordedFrame, std::string> readFrame(recording::RecordingReader& reader,

@@ -47,10 +47,6 @@ struct ImportOptions {
   bool overwrite = false;
 };
 
-int fail(const std::string& message) {
-  spdlog::error("{}", message);
-  return EXIT_FAILURE;
-}
 
 bool isVideo(const std::string& path) {
   std::string extension = fs::path(path).extension().string();

@@ -12,6 +12,11 @@
 #include "commands.h"
 #include "util/cli_conventions.h"
 
+int vem::tool::fail(const std::string& message) {
+  spdlog::error("{}", message);
+  return vem::cli::kExitFailure;
+}
+
 int main(int argc, char** argv) {
   // Diagnostics go to stderr, one line each; stdout carries only results (JSON).
   auto logger = spdlog::stderr_color_st("vemtool");

@@ -39,10 +39,6 @@ struct SynthOptions {
   bool overwrite = false;
 };
 
-int fail(const std::string& message) {
-  spdlog::error("{}", message);
-  return EXIT_FAILURE;
-}
 
 std::expected<std::unique_ptr<synth::SyntheticScene>, std::string> loadScene(
     const SynthOptions& o) {

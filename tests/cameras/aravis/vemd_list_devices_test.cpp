@@ -23,7 +23,7 @@ TEST(VemdListDevices, ListsTheFakeGigECameraWithItsSpecAndModesAndEveryBackend) 
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("vemd_list_devices_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  const CommandRun listed = runCommand(std::string(VEMD_PATH) + " --list-devices", dir);
+  const CommandRun listed = runCommand(vem::testing::commandLine(VEMD_PATH, "--list-devices"), dir);
   std::filesystem::remove_all(dir);
   ASSERT_EQ(listed.exitCode, 0) << listed.out << listed.err;
   EXPECT_NE(listed.out.find("aravis:Aravis-Fake-VEM12  Aravis Fake (VEM12)\n"), std::string::npos)
