@@ -15,8 +15,8 @@
 
 #include "core/cube_map.h"
 #include "core/env_map.h"
+#include "frames/processed_frame.h"
 #include "proto/vem_stream.pb.h"
-#include "vemd/processed_frame.h"
 
 namespace vem::stream {
 
@@ -30,7 +30,7 @@ struct LightFrameStamp {
 
 // A ServerMessage holding a LightFrame (protocol version not yet set: see serialize).
 // `frame.captured` must not be null.
-[[nodiscard]] ServerMessage lightFrameMessage(const vemd::ProcessedFrame& frame,
+[[nodiscard]] ServerMessage lightFrameMessage(const ProcessedFrame& frame,
                                               const LightFrameStamp& stamp);
 
 // A ServerMessage holding an EnvironmentFrame of `cube` (all its levels; face size and level count

@@ -19,9 +19,9 @@
 #include <optional>
 #include <thread>
 
-#include "vemd/captured_frame.h"
+#include "frames/captured_frame.h"
+#include "frames/frame_source.h"
 #include "vemd/frame_queue.h"
-#include "vemd/frame_source.h"
 #include "vemd/pacer.h"
 
 namespace vem::vemd {

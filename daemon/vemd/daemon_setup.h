@@ -19,8 +19,8 @@
 #include <string_view>
 #include <vector>
 
+#include "frames/frame_source.h"
 #include "vemd/daemon_loop.h"
-#include "vemd/frame_source.h"
 #include "vemd/pipeline.h"
 #include "vemd/sink_set.h"
 #include "vemd/sinks/recording_context.h"

@@ -97,8 +97,7 @@ void unpackRow(Row in, const V4l2Layout& layout, Out out) {
 
 }  // namespace
 
-void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout,
-                     calib::RawFrame& frame) {
+void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout, RawFrame& frame) {
   if (data.size() < layout.minimumBytes() ||
       layout.bytesPerLine < packedRowBytes(layout.fourcc, layout.widthPx)) {
     std::fprintf(stderr, "unpackV4l2Frame: %zu bytes at %zu per line for %s %dx%d\n", data.size(),

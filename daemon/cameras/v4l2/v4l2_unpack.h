@@ -16,14 +16,13 @@
 #include <cstddef>
 #include <span>
 
-#include "calib/core/raw_frame.h"
 #include "cameras/v4l2/v4l2_formats.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras {
 
 // Reads `data` (at least layout.minimumBytes() bytes) into `frame`: size, format and codes set,
 // the codes' storage reused; exposure and gain untouched.
-void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout,
-                     calib::RawFrame& frame);
+void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout, RawFrame& frame);
 
 }  // namespace vem::cameras

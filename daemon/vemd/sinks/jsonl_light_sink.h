@@ -1,7 +1,7 @@
 // JsonlLightSink: appends one JSON object per processed frame to a file, one line each, flushed
 // (written to the kernel with one write()) per line, so `tail -f` and a crash both see whole lines.
 //
-// A line is the `vemtool lights` object (docs/conventions.md, tools/vemtool/light_json.h) with
+// A line is the `vemtool lights` object (docs/conventions.md, light_json.h) with
 // vemd's frame identity added after "frame":
 //
 //   {"frame":F,"seq":S,"capture_ts_ns":T,"filtered":true,"filtered_seq":S2,"count":N,
@@ -30,8 +30,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frames/sink.h"
 #include "recording/file_descriptor.h"
-#include "vemd/sink.h"
 
 namespace vem::vemd {
 

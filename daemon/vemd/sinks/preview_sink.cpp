@@ -14,8 +14,8 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "frames/published_lights.h"
 #include "recording/file_descriptor.h"
-#include "vemd/sinks/published_lights.h"
 
 namespace vem::vemd {
 namespace {
