@@ -5,7 +5,7 @@
 // Conventions: directions unit, in the world frame of env_map.h (right-handed, +Y up); rgb in
 // light.h's units (map units x sr); times in nanoseconds, *UnixNs on CLOCK_REALTIME, capture_ts_ns
 // on the source's clock. Light frames carry exactly the lights the JSON-lines sink writes
-// (vemd/sinks/published_lights.h): the filtered set when the frame has one, else its own lights, in
+// (frames/published_lights.h): the filtered set when the frame has one, else its own lights, in
 // id order, and the clustering of that set when present.
 #pragma once
 

@@ -1,5 +1,5 @@
 // StreamSink: vemd's processed frames to the stream server (stream_server.h), on the processing
-// thread like every sink (vemd/sink.h).
+// thread like every sink (frames/sink.h).
 //
 // - Per frame, the light frame message is built and serialized once (frame_encoding.h: exactly
 //   the lights the JSON-lines sink writes) and handed to the server, which never waits for a

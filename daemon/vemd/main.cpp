@@ -1,6 +1,6 @@
 // vemd: the capture daemon. Parses the configuration, builds source, pipeline and sinks, runs the
 // loop until the source ends, --frames is reached, or SIGINT/SIGTERM; streams to render clients
-// ([stream], daemon/stream/stream_setup.h); docs/vemd.md.
+// ([stream], vemd/stream_wiring.h); docs/vemd.md.
 // SIGINT/SIGTERM are caught from before start-up: start-up checks the flag between its steps and
 // the rows of the polar remap (daemon_setup.h), the loop at least every 50 ms.
 // Exit status (util/cli_conventions.h): 0 after a clean stop (also one asked for during start-up),

@@ -1,5 +1,5 @@
 // AravisSource: a GenICam camera (GigE Vision or USB3 Vision) read through Aravis 0.8, as vemd's
-// FrameSource (daemon/vemd/frame_source.h); `vemd --source aravis:ID`. docs/cameras.md has the
+// FrameSource (daemon/frames/frame_source.h); `vemd --source aravis:ID`. docs/cameras.md has the
 // user's side (specs, network and USB set-up).
 //
 // - ID: a dotted IPv4 address ("192.168.1.20", "127.0.0.1") opens that GigE Vision camera

@@ -1,5 +1,5 @@
 // LibcameraSource: a camera libcamera drives (Raspberry Pi CSI cameras, UVC webcams, ISP
-// pipelines: docs/cameras.md), as vemd's FrameSource (vemd/frame_source.h), `--source
+// pipelines: docs/cameras.md), as vemd's FrameSource (frames/frame_source.h), `--source
 // libcamera:ID`. ID is the camera's libcamera id (`vemd --list-devices`, `cam -l`) or its index in
 // that list.
 //

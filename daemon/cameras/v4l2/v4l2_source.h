@@ -1,5 +1,5 @@
 // V4l2Source: a Video4Linux2 camera (a UVC webcam or a 360 camera in UVC mode, a sensor behind a
-// V4L2 capture driver) as vemd's frame source (vemd/frame_source.h), `--source v4l2:/dev/videoN`
+// V4L2 capture driver) as vemd's frame source (frames/frame_source.h), `--source v4l2:/dev/videoN`
 // or `--source v4l2:NAME` (the card name VIDIOC_QUERYCAP gives).
 //
 // - Capture: memory-mapped streaming with max(settings.buffers, 4) buffers; next() polls the

@@ -8,7 +8,7 @@
 //    "lights":[{"id":K,"dir":[x,y,z],"rgb":[r,g,b]},...]}
 //
 // - "frame" counts the lines this sink wrote (0, 1, ...); "seq" and "capture_ts_ns" are the
-//   captured frame's (captured_frame.h: the source's sequence number, its clock in ns).
+//   captured frame's (frames/captured_frame.h: the source's sequence number, its clock in ns).
 // - The lights are the published ones (published_lights.h): the temporal filter's output when the
 //   frame has one ("filtered":true, and "filtered_seq" the frame they stand for), else the frame's
 //   own lights ("filtered":false).
