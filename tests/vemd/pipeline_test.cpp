@@ -1,6 +1,6 @@
 // The per-frame pipeline: determinism (record then replay gives the same lights bit for bit), the
 // code table's rebuilds, the stages it reports, and frames it must refuse.
-include "vemd/pipeline.h"
+#include "vemd/pipeline.h"
 #include "vemd/pipeline_setup.h"
 
 #include <cmath>
@@ -12,7 +12,7 @@ include "vemd/pipeline.h"
 #include "vemd/replay_source.h"
 #include "vemd_fixtures.h"
 
-    namespace vem::testing {
+namespace vem::testing {
 namespace {
 
 vemd::Pipeline smallPipeline(vem::ProcessingOptions options = smallProcessing()) {

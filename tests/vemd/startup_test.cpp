@@ -10,11 +10,11 @@
 
 #include "calib/core/polar_remap.h"
 #include "recording/recording_reader.h"
-include "vemd/pipeline.h"
+#include "vemd/pipeline.h"
 #include "vemd/pipeline_setup.h"
 #include "vemd_fixtures.h"
 
-    namespace vem::testing {
+namespace vem::testing {
 namespace {
 
 class Startup : public VemdFiles {
