@@ -31,7 +31,7 @@
 
 #include "calib/core/checkerboard.h"
 #include "calib/core/kannala_brandt.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

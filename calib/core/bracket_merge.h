@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "calib/core/photometric_model.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

@@ -10,7 +10,7 @@
 #include "calib/core/camera_orientation.h"
 #include "calib/core/kannala_brandt.h"
 #include "calib/core/photometric_model.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

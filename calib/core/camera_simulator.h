@@ -21,8 +21,8 @@
 
 #include "calib/core/camera_calibration.h"
 #include "calib/core/photometric_fit.h"
-#include "calib/core/raw_frame.h"
 #include "core/env_map.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

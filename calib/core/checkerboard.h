@@ -26,7 +26,7 @@
 #include "calib/core/camera_calibration.h"
 #include "calib/core/camera_simulator.h"
 #include "calib/core/kannala_brandt.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

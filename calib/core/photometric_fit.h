@@ -16,7 +16,7 @@
 
 #include "calib/core/camera_calibration.h"
 #include "calib/core/photometric_model.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

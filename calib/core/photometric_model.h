@@ -21,7 +21,7 @@
 #include <variant>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

@@ -20,8 +20,8 @@
 #include "calib/core/camera_orientation.h"
 #include "calib/core/kannala_brandt.h"
 #include "calib/core/photometric_model.h"
-#include "calib/core/raw_frame.h"
 #include "core/env_map.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

@@ -38,7 +38,7 @@
 #include <string>
 
 #include "calib/core/photometric_model.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib {
 

@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <optional>
 
-#include "calib/core/raw_frame.h"
 #include "calib/io/calib_file_failure.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calib::io {
 

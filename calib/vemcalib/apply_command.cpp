@@ -46,8 +46,8 @@ std::expected<calib::CameraCalibration, std::string> loadCalibrated(const std::s
   return std::move(*calibration);
 }
 
-std::expected<calib::RawFrame, std::string> loadMatchingFrame(const ApplyOptions& o,
-                                                              const calib::CameraCalibration& c) {
+std::expected<RawFrame, std::string> loadMatchingFrame(const ApplyOptions& o,
+                                                       const calib::CameraCalibration& c) {
   auto frame = loadFrameArgument(o.frame, c.camera.pixelFormat.bits, o.gain);
   if (!frame) return std::unexpected(frame.error());
   if (auto mismatch = frameMismatch(c.camera, o.camera, *frame))
@@ -56,7 +56,7 @@ std::expected<calib::RawFrame, std::string> loadMatchingFrame(const ApplyOptions
 }
 
 std::expected<void, std::string> saveMask(const calib::PolarRemap& remap, const std::string& path) {
-  calib::RawFrame mask = calib::RawFrame::blank(remap.mapWidth, remap.mapHeight, {1, 8});
+  RawFrame mask = RawFrame::blank(remap.mapWidth, remap.mapHeight, {1, 8});
   const std::vector<std::uint8_t> valid = remap.validMask();
   std::ranges::transform(valid, mask.codes.begin(),
                          [](std::uint8_t v) { return std::uint16_t(v != 0 ? 255 : 0); });

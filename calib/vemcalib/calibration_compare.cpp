@@ -131,7 +131,7 @@ LensDifference compareLenses(const calib::KannalaBrandtLens& fitted,
 
 ResponseDifference compareResponses(const calib::PhotometricCalibration& fitted,
                                     const calib::PhotometricCalibration& truth,
-                                    calib::PixelFormat format) {
+                                    PixelFormat format) {
   ResponseDifference d;
   d.firstCode = int(std::floor(std::max(fitted.blackLevelCode, truth.blackLevelCode))) + 1;
   d.lastCode = int(std::ceil(std::min(fitted.saturationCode, truth.saturationCode))) - 1;

@@ -35,7 +35,7 @@ struct ResponseDifference {
                                            const calib::KannalaBrandtLens& truth);
 [[nodiscard]] ResponseDifference compareResponses(const calib::PhotometricCalibration& fitted,
                                                   const calib::PhotometricCalibration& truth,
-                                                  calib::PixelFormat format);
+                                                  PixelFormat format);
 
 // The table: one line per value, fitted, truth and their difference, then the differences above.
 void printComparison(std::ostream& out, const calib::CameraCalibration& fitted,

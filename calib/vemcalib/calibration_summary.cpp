@@ -16,7 +16,7 @@ namespace {
 
 constexpr const char* kIndent = "              ";  // under the section names
 
-std::string channelName(calib::PixelFormat format, int channel) {
+std::string channelName(PixelFormat format, int channel) {
   if (format.channels == 1) return "";
   return std::string(1, "RGB"[channel]) + ": ";
 }
@@ -39,7 +39,7 @@ void printPhotometric(std::ostream& out, const calib::CameraCalibration& calibra
     return;
   }
   const calib::PhotometricCalibration& p = *calibration.photometric;
-  const calib::PixelFormat format = calibration.camera.pixelFormat;
+  const PixelFormat format = calibration.camera.pixelFormat;
   fmt::print(out, "photometric:  {} response, black level {:g}, saturation {:g} (codes)\n",
              calib::responseModelName(p.response), p.blackLevelCode, p.saturationCode);
   for (const std::string& line : responseLines(p, format)) fmt::print(out, "{}{}\n", kIndent, line);
@@ -76,7 +76,7 @@ void printGeometric(std::ostream& out, const calib::CameraCalibration& calibrati
 }  // namespace
 
 std::vector<std::string> responseLines(const calib::PhotometricCalibration& photometric,
-                                       calib::PixelFormat format) {
+                                       PixelFormat format) {
   std::vector<std::string> lines;
   for (int c = 0; c < format.channels; ++c)
     lines.push_back(channelName(format, c) +
@@ -84,8 +84,8 @@ std::vector<std::string> responseLines(const calib::PhotometricCalibration& phot
   return lines;
 }
 
-std::string readableRange(const calib::PhotometricCalibration& photometric,
-                          calib::PixelFormat format, double exposureUs, double gain) {
+std::string readableRange(const calib::PhotometricCalibration& photometric, PixelFormat format,
+                          double exposureUs, double gain) {
   double lowest = 0.0, highest = INFINITY;  // what every channel reads
   for (int c = 0; c < format.channels; ++c) {
     lowest =
@@ -103,8 +103,7 @@ void printCalibration(std::ostream& out, const calib::CameraCalibration& calibra
   const calib::CameraIdentity& camera = calibration.camera;
   fmt::print(out, "{}: vemcast camera file\n", path);
   fmt::print(out, "camera:       {}, serial {}, {} x {} px, {}\n", camera.model, camera.serial,
-             camera.sensorWidthPx, camera.sensorHeightPx,
-             calib::pixelFormatName(camera.pixelFormat));
+             camera.sensorWidthPx, camera.sensorHeightPx, pixelFormatName(camera.pixelFormat));
   printPhotometric(out, calibration);
   printGeometric(out, calibration);
   const calib::CameraOrientation& o = calibration.orientation;

@@ -12,12 +12,12 @@ namespace vem::calibtool {
 
 // One line per channel: "R: code = 1552 + 209 ln(L / 1 cd/m2)".
 [[nodiscard]] std::vector<std::string> responseLines(
-    const calib::PhotometricCalibration& photometric, calib::PixelFormat format);
+    const calib::PhotometricCalibration& photometric, PixelFormat format);
 
 // "reads 0.0008 to 1.7e+05 cd/m2 (8.3 decades)": from the code above the black level to saturation,
 // the range every channel reads.
 [[nodiscard]] std::string readableRange(const calib::PhotometricCalibration& photometric,
-                                        calib::PixelFormat format, double exposureUs, double gain);
+                                        PixelFormat format, double exposureUs, double gain);
 
 // Everything, section by section, as `vemcalib show` prints it.
 void printCalibration(std::ostream& out, const calib::CameraCalibration& calibration,

@@ -26,7 +26,7 @@ std::expected<std::optional<calib::CameraCalibration>, std::string> loadCameraTo
                          " (the output file must load before it is updated)");
 }
 
-calib::CameraCalibration newCameraFor(const calib::RawFrame& frame) {
+calib::CameraCalibration newCameraFor(const RawFrame& frame) {
   calib::CameraCalibration calibration;
   calibration.camera.sensorWidthPx = frame.width;
   calibration.camera.sensorHeightPx = frame.height;
@@ -35,14 +35,13 @@ calib::CameraCalibration newCameraFor(const calib::RawFrame& frame) {
 }
 
 std::optional<std::string> frameMismatch(const calib::CameraIdentity& camera,
-                                         const std::string& cameraPath,
-                                         const calib::RawFrame& frame) {
+                                         const std::string& cameraPath, const RawFrame& frame) {
   if (frame.width == camera.sensorWidthPx && frame.height == camera.sensorHeightPx &&
       frame.format == camera.pixelFormat)
     return std::nullopt;
   return fmt::format("the frames are {} but the camera in {} is {} x {} {}", describeFrame(frame),
                      cameraPath, camera.sensorWidthPx, camera.sensorHeightPx,
-                     calib::pixelFormatName(camera.pixelFormat));
+                     pixelFormatName(camera.pixelFormat));
 }
 
 std::string utcDateNow() {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "calib/core/camera_calibration.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 #include "util/cli_conventions.h"
 
 namespace vem::calibtool {
@@ -26,13 +26,13 @@ int reportFailure(const std::string& sentence);
     const std::filesystem::path& path);
 
 // A new calibration for the sensor that took `frame`: model and serial "unknown", no sections.
-[[nodiscard]] calib::CameraCalibration newCameraFor(const calib::RawFrame& frame);
+[[nodiscard]] calib::CameraCalibration newCameraFor(const RawFrame& frame);
 
 // "<path>: the frames are 640 x 480 Mono12 but the camera is 1280 x 1024 RGB12", or nothing when
 // the frame fits the camera.
 [[nodiscard]] std::optional<std::string> frameMismatch(const calib::CameraIdentity& camera,
                                                        const std::string& cameraPath,
-                                                       const calib::RawFrame& frame);
+                                                       const RawFrame& frame);
 
 // Now, UTC, ISO 8601 to the second: "2026-01-31T12:00:00Z".
 [[nodiscard]] std::string utcDateNow();

@@ -41,7 +41,7 @@ struct FisheyeOptions {
 
 // The images that show the board, with their corners and names.
 struct BoardViews {
-  std::vector<calib::RawFrame> frames;
+  std::vector<RawFrame> frames;
   std::vector<std::vector<glm::dvec2>> corners;
   std::vector<std::string> names;
 };
@@ -50,7 +50,7 @@ struct FisheyeInputs {
   std::optional<calib::CameraCalibration> existing;  // the --out file, when there is one
   calib::CameraCalibration fresh;                    // else a new one for the images' sensor
   calib::Checkerboard board;
-  std::vector<calib::RawFrame> frames;  // every --image, in order
+  std::vector<RawFrame> frames;  // every --image, in order
 };
 
 calib::Checkerboard boardFrom(const FisheyeOptions& o) {
@@ -68,7 +68,7 @@ std::expected<FisheyeInputs, std::string> loadInputs(const FisheyeOptions& o) {
   for (const std::string& image : o.images) {
     auto frame = calib::io::loadRawFrame(image, bits);
     if (!frame) return std::unexpected(frame.error().message);
-    const calib::RawFrame& first = in.frames.empty() ? *frame : in.frames.front();
+    const RawFrame& first = in.frames.empty() ? *frame : in.frames.front();
     if (frame->width != first.width || frame->height != first.height ||
         frame->format != first.format)
       return std::unexpected(

@@ -25,9 +25,8 @@ std::expected<FrameArgument, std::string> parseFrameArgument(std::string_view te
   return FrameArgument{std::filesystem::path(text.substr(0, at)), exposureUs};
 }
 
-std::expected<calib::RawFrame, std::string> loadFrameArgument(std::string_view text,
-                                                              std::optional<int> bits,
-                                                              double gain) {
+std::expected<RawFrame, std::string> loadFrameArgument(std::string_view text,
+                                                       std::optional<int> bits, double gain) {
   const auto argument = parseFrameArgument(text);
   if (!argument) return std::unexpected(argument.error());
   auto frame = calib::io::loadRawFrame(argument->path, bits);
@@ -37,8 +36,8 @@ std::expected<calib::RawFrame, std::string> loadFrameArgument(std::string_view t
   return std::move(*frame);
 }
 
-std::string describeFrame(const calib::RawFrame& frame) {
-  return fmt::format("{} x {} {}", frame.width, frame.height, calib::pixelFormatName(frame.format));
+std::string describeFrame(const RawFrame& frame) {
+  return fmt::format("{} x {} {}", frame.width, frame.height, pixelFormatName(frame.format));
 }
 
 }  // namespace vem::calibtool

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::calibtool {
 
@@ -26,11 +26,11 @@ struct FrameArgument {
 [[nodiscard]] std::expected<FrameArgument, std::string> parseFrameArgument(std::string_view text);
 
 // Loads the frame (with `bits`-bit codes, else the image's depth) and sets its exposure and gain.
-[[nodiscard]] std::expected<calib::RawFrame, std::string> loadFrameArgument(std::string_view text,
-                                                                            std::optional<int> bits,
-                                                                            double gain);
+[[nodiscard]] std::expected<RawFrame, std::string> loadFrameArgument(std::string_view text,
+                                                                     std::optional<int> bits,
+                                                                     double gain);
 
 // "1280 x 1024 RGB12"
-[[nodiscard]] std::string describeFrame(const calib::RawFrame& frame);
+[[nodiscard]] std::string describeFrame(const RawFrame& frame);
 
 }  // namespace vem::calibtool

@@ -39,16 +39,16 @@ struct PhotometricOptions {
 struct PhotometricInputs {
   std::optional<calib::CameraCalibration> existing;  // the --out file, when there is one
   std::vector<calib::PatchSpec> patches;
-  std::vector<calib::RawFrame> frames;
+  std::vector<RawFrame> frames;
 };
 
-std::expected<std::vector<calib::RawFrame>, std::string> loadFrames(const PhotometricOptions& o,
-                                                                    std::optional<int> bits) {
-  std::vector<calib::RawFrame> frames;
+std::expected<std::vector<RawFrame>, std::string> loadFrames(const PhotometricOptions& o,
+                                                             std::optional<int> bits) {
+  std::vector<RawFrame> frames;
   for (const std::string& argument : o.frames) {
     auto frame = loadFrameArgument(argument, bits, o.gain);
     if (!frame) return std::unexpected(frame.error());
-    const calib::RawFrame& first = frames.empty() ? *frame : frames.front();
+    const RawFrame& first = frames.empty() ? *frame : frames.front();
     if (frame->width != first.width || frame->height != first.height ||
         frame->format != first.format || frame->exposureUs != first.exposureUs)
       return std::unexpected(fmt::format(
@@ -61,8 +61,7 @@ std::expected<std::vector<calib::RawFrame>, std::string> loadFrames(const Photom
   return frames;
 }
 
-std::optional<std::string> regionProblem(const calib::PatchSpec& patch,
-                                         const calib::RawFrame& frame,
+std::optional<std::string> regionProblem(const calib::PatchSpec& patch, const RawFrame& frame,
                                          const std::string& patchesPath) {
   if (patch.x + patch.width <= frame.width && patch.y + patch.height <= frame.height)
     return std::nullopt;
@@ -96,7 +95,7 @@ std::expected<PhotometricInputs, std::string> loadInputs(const PhotometricOption
 
 std::expected<calib::PhotometricFitOptions, std::string> fitOptionsFor(
     const PhotometricOptions& o, const PhotometricInputs& in) {
-  const calib::PixelFormat format = in.frames.front().format;
+  const PixelFormat format = in.frames.front().format;
   const std::optional<calib::PhotometricCalibration> known =
       in.existing ? in.existing->photometric : std::nullopt;
   calib::PhotometricFitOptions fit;
@@ -108,7 +107,7 @@ std::expected<calib::PhotometricFitOptions, std::string> fitOptionsFor(
   if (fit.saturationCode > format.maxCode())
     return std::unexpected(fmt::format("the saturation code {:g} is above {}, the largest {} code",
                                        fit.saturationCode, format.maxCode(),
-                                       calib::pixelFormatName(format)));
+                                       pixelFormatName(format)));
   if (!(fit.blackLevelCode < fit.saturationCode))
     return std::unexpected(
         fmt::format("the black level {:g} must lie below the saturation code {:g}",
@@ -136,7 +135,7 @@ void printTable(const std::vector<calib::PatchResult>& results, int channels) {
 }
 
 void printSummary(const calib::PhotometricFit& fit, const calib::PhotometricFitOptions& options,
-                  calib::PixelFormat format) {
+                  PixelFormat format) {
   const calib::PhotometricQuality& q = fit.quality;
   fmt::print(
       "fit: {} response from {} patches: rms residual {:.3g} %, largest {:.3g} % (limit {:g} %)\n",
@@ -177,7 +176,7 @@ int runPhotometric(const PhotometricOptions& o) {
   for (const calib::PatchSpec& patch : inputs->patches)
     measured.push_back(calib::measurePatch(inputs->frames, patch, options->blackLevelCode,
                                            options->saturationCode));
-  const calib::PixelFormat format = inputs->frames.front().format;
+  const PixelFormat format = inputs->frames.front().format;
   const auto fit = calib::fitPhotometric(measured, *options);
   if (!fit) {
     if (!fit.error().patches.empty()) printTable(fit.error().patches, format.channels);

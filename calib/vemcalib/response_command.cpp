@@ -36,7 +36,7 @@ struct ResponseOptions {
 };
 
 // Each bracket must name its exposure: FILE@EXPOSURE_US.
-std::expected<calib::RawFrame, std::string> loadBracket(const std::string& token) {
+std::expected<RawFrame, std::string> loadBracket(const std::string& token) {
   const auto argument = parseFrameArgument(token);
   if (!argument) return std::unexpected(argument.error());
   if (argument->path.string() == token) {
@@ -48,8 +48,8 @@ std::expected<calib::RawFrame, std::string> loadBracket(const std::string& token
   return loadFrameArgument(token, std::nullopt, 1.0);
 }
 
-std::expected<std::vector<calib::RawFrame>, std::string> loadBrackets(const ResponseOptions& o) {
-  std::vector<calib::RawFrame> frames;
+std::expected<std::vector<RawFrame>, std::string> loadBrackets(const ResponseOptions& o) {
+  std::vector<RawFrame> frames;
   for (const std::string& token : o.brackets) {
     auto frame = loadBracket(token);
     if (!frame) return std::unexpected(frame.error());
@@ -66,9 +66,9 @@ std::expected<std::vector<calib::RawFrame>, std::string> loadBrackets(const Resp
 
 // True when three exposures or more step by one ratio throughout (response_recovery.h: the curve
 // then keeps a periodic ambiguity that only smoothness resolves).
-bool evenlySpaced(std::span<const calib::RawFrame> frames) {
+bool evenlySpaced(std::span<const RawFrame> frames) {
   std::vector<double> exposures;
-  for (const calib::RawFrame& f : frames) exposures.push_back(f.exposureUs * f.gain);
+  for (const RawFrame& f : frames) exposures.push_back(f.exposureUs * f.gain);
   std::sort(exposures.begin(), exposures.end());
   if (exposures.size() < 3) return false;
   const double ratio = exposures[1] / exposures[0];
@@ -78,8 +78,7 @@ bool evenlySpaced(std::span<const calib::RawFrame> frames) {
   return true;
 }
 
-void printCurve(const calib::RecoveredResponse& recovered,
-                std::span<const calib::RawFrame> frames) {
+void printCurve(const calib::RecoveredResponse& recovered, std::span<const RawFrame> frames) {
   const auto [shortest, longest] = std::minmax_element(
       frames.begin(), frames.end(),
       [](const auto& a, const auto& b) { return a.exposureUs * a.gain < b.exposureUs * b.gain; });
@@ -138,7 +137,7 @@ int writeMergedMap(const std::string& path, const calib::MergedBracket& merged) 
 }
 
 int writeCalibration(const ResponseOptions& o, std::optional<calib::CameraCalibration> existing,
-                     const calib::RawFrame& first, const calib::PhotometricCalibration& photometric,
+                     const RawFrame& first, const calib::PhotometricCalibration& photometric,
                      const calib::BracketConsistency& consistency) {
   const bool merging = existing.has_value();
   calib::CameraCalibration calibration = existing ? std::move(*existing) : newCameraFor(first);
@@ -157,7 +156,7 @@ int writeCalibration(const ResponseOptions& o, std::optional<calib::CameraCalibr
 // The brackets and the camera file they update, checked against each other and the options.
 struct ResponseInputs {
   std::optional<calib::CameraCalibration> existing;  // the --out file, when there is one
-  std::vector<calib::RawFrame> frames;
+  std::vector<RawFrame> frames;
 };
 
 std::expected<ResponseInputs, std::string> loadInputs(const ResponseOptions& o) {
@@ -185,10 +184,10 @@ struct MergeCheck {
   calib::BracketConsistency consistency;
 };
 
-MergeCheck checkMerge(std::span<const calib::RawFrame> frames,
+MergeCheck checkMerge(std::span<const RawFrame> frames,
                       const calib::PhotometricCalibration& photometric) {
   std::vector<calib::BracketLut> luts;
-  for (const calib::RawFrame& f : frames) {
+  for (const RawFrame& f : frames) {
     luts.push_back(buildBracketLut(photometric, f.format, f.exposureUs, f.gain, {}));
   }
   return MergeCheck{calib::mergeBracket(frames, luts), calib::bracketConsistency(frames, luts)};

@@ -76,7 +76,7 @@ std::expected<std::vector<std::string>, std::string> writeViews(
   std::vector<std::string> files;
   for (std::size_t i = 0; i < poses.size(); ++i) {
     simulation.noise.seed = o.seed + i;
-    const calib::RawFrame frame =
+    const RawFrame frame =
         calib::simulateBoardView(board, poses[i], truth, simulation, white, white / kPrintContrast);
     files.push_back((fs::path(o.out) / fmt::format("board-{:02}.png", i)).string());
     if (auto saved = calib::io::saveRawFrame(frame, files.back()); !saved)
@@ -99,8 +99,8 @@ int runSimulateBoards(const SimulateBoardsOptions& o) {
   const calib::CameraIdentity& camera = truth->camera;
   fmt::print("wrote {} views of the board ({}): {} to {}, {} x {} {}, read noise {:g} codes\n",
              files->size(), describeBoard(board), files->front(), files->back(),
-             camera.sensorWidthPx, camera.sensorHeightPx,
-             calib::pixelFormatName(camera.pixelFormat), o.noiseCode);
+             camera.sensorWidthPx, camera.sensorHeightPx, pixelFormatName(camera.pixelFormat),
+             o.noiseCode);
   fmt::print("next: vemcalib fisheye --image {} --board {}x{} --square {:g} --fov {:g} --out {}\n",
              fmt::join(*files, " "), cols, rows, o.squareMm,
              2.0 * truth->lens->maxThetaRad * 180.0 / std::numbers::pi,

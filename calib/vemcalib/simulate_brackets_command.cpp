@@ -72,7 +72,7 @@ std::expected<calib::CameraCalibration, std::string> bracketCamera(const Simulat
       return std::unexpected(
           fmt::format("{}: the camera's table is for {} codes; brackets for "
                       "`vemcalib response` need an 8-bit camera",
-                      o.camera, calib::pixelFormatName(truth->camera.pixelFormat)));
+                      o.camera, pixelFormatName(truth->camera.pixelFormat)));
     }
     return std::move(*truth);
   }
@@ -117,7 +117,7 @@ int runSimulateBrackets(const SimulateBracketsOptions& o) {
   const auto frames =
       calib::simulateBracket(calib::radianceFromMap(*map), *truth, o.exposuresUs, simulation);
   std::vector<std::string> tokens;
-  for (const calib::RawFrame& frame : frames) {
+  for (const RawFrame& frame : frames) {
     const fs::path path = fs::path(o.out) / fmt::format("bracket-{:g}.png", frame.exposureUs);
     if (auto saved = calib::io::saveRawFrame(frame, path); !saved) {
       return reportFailure(saved.error().message);
@@ -125,7 +125,7 @@ int runSimulateBrackets(const SimulateBracketsOptions& o) {
     tokens.push_back(fmt::format("{}@{:g}", path.string(), frame.exposureUs));
   }
   spdlog::info("wrote {} frames of {} x {} {} to {}", frames.size(), frames.front().width,
-               frames.front().height, calib::pixelFormatName(frames.front().format), o.out);
+               frames.front().height, pixelFormatName(frames.front().format), o.out);
   fmt::print("{}\n", fmt::join(tokens, " "));
   return EXIT_SUCCESS;
 }

@@ -125,7 +125,7 @@ std::expected<std::vector<std::string>, std::string> writeChartFrames(
   std::vector<std::string> frames;
   for (int k = 1; k <= o.frames; ++k) {
     simulation.noise.seed = o.seed + std::uint64_t(k - 1);
-    const calib::RawFrame frame = calib::simulatePatchFrame(chart, background, truth, simulation);
+    const RawFrame frame = calib::simulatePatchFrame(chart, background, truth, simulation);
     frames.push_back((fs::path(o.out) / fmt::format("patches-{}.png", k)).string());
     if (auto saved = calib::io::saveRawFrame(frame, frames.back()); !saved)
       return std::unexpected(saved.error().message);
@@ -153,7 +153,7 @@ int runSimulatePatches(const SimulatePatchesOptions& o) {
              chart[kFitPatches - 1].luminanceCdM2);
   fmt::print("wrote {}: {} x {} {}, read noise {:g} codes\n", fmt::join(*frames, ", "),
              truth->camera.sensorWidthPx, truth->camera.sensorHeightPx,
-             calib::pixelFormatName(truth->camera.pixelFormat), o.noiseCode);
+             pixelFormatName(truth->camera.pixelFormat), o.noiseCode);
   fmt::print("next: {}\n", nextPhotometricCommand(o, *truth, *frames));
   return EXIT_SUCCESS;
 }
@@ -188,13 +188,12 @@ int runSimulateFrame(const SimulateFrameOptions& o) {
   simulation.radianceScale = o.scale;
   simulation.noise.readNoiseCode = o.noiseCode;
   simulation.noise.seed = o.seed;
-  const calib::RawFrame frame =
-      calib::simulateFrame(calib::radianceFromMap(*map), *truth, simulation);
+  const RawFrame frame = calib::simulateFrame(calib::radianceFromMap(*map), *truth, simulation);
   if (auto saved = calib::io::saveRawFrame(frame, o.out); !saved)
     return reportFailure(saved.error().message);
   fmt::print(
       "wrote {}: {} x {} {}, the camera in front of {} (x {:g} cd/m2 per map unit), {:g} us\n",
-      o.out, frame.width, frame.height, calib::pixelFormatName(frame.format), o.map, o.scale,
+      o.out, frame.width, frame.height, pixelFormatName(frame.format), o.map, o.scale,
       frame.exposureUs);
   fmt::print("next: {}\n", nextApplyCommand(o));
   return EXIT_SUCCESS;

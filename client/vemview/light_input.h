@@ -3,7 +3,7 @@
 // - stream (`--connect ws://HOST:PORT`): vemd's stream through client/stream_client.h; a new
 //   frame each time the daemon publishes one; lights in vemd's world frame (hemisphere map).
 // - light file (`--lights FILE.jsonl`): vemd's JSON-lines sink or `vemtool lights` output, one
-//   frame per line (daemon/tools/vemtool/light_json.h); after the last line the last frame stays.
+//   frame per line (daemon/vemd/sinks/light_json.h); after the last line the last frame stays.
 // - map file (`--map FILE`): an environment map (daemon/mapio); the lights are computed once with
 //   the core (Havran sampler, the default pattern), the cube map once when the plan wants it; the
 //   frame never changes.

@@ -4,7 +4,7 @@
 //
 // Conventions:
 // - pixelFormat names what the pipeline receives, in calib's names ("Mono8", "Mono12", "Mono16",
-//   "RGB8", ...; calib/core/raw_frame.h); each backend picks the native format that yields it
+//   "RGB8", ...; daemon/frames/raw_frame.h); each backend picks the native format that yields it
 //   (V4L2 "Y16 " gives Mono16, GenICam "Mono12" gives Mono12). "" lets the backend choose the
 //   deepest format the camera offers.
 // - exposureUs in microseconds, gain as a linear factor (1 = unity; backends convert to the

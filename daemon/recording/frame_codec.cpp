@@ -104,7 +104,7 @@ bool parsePayload(std::span<const std::byte> payload, const RecordingHeader& hea
   const std::uint64_t expectedBytes = frameBytes(header);
   if (meta.width_px() != std::uint32_t(header.sensorWidthPx) ||
       meta.height_px() != std::uint32_t(header.sensorHeightPx) ||
-      meta.pixel_format() != calib::pixelFormatName(header.pixelFormat) ||
+      meta.pixel_format() != pixelFormatName(header.pixelFormat) ||
       meta.uncompressed_bytes() != expectedBytes ||
       meta.compressed_bytes() != parsed.compressed.size()) {
     return false;
@@ -127,9 +127,8 @@ FrameCodec::~FrameCodec() = default;
 FrameCodec::FrameCodec(FrameCodec&&) noexcept = default;
 FrameCodec& FrameCodec::operator=(FrameCodec&&) noexcept = default;
 
-void FrameCodec::encodeRecord(std::uint64_t seq, std::int64_t captureTsNs,
-                              const calib::RawFrame& frame, const LightSet* lights,
-                              std::vector<std::byte>& record) {
+void FrameCodec::encodeRecord(std::uint64_t seq, std::int64_t captureTsNs, const RawFrame& frame,
+                              const LightSet* lights, std::vector<std::byte>& record) {
   if (contexts_->compress == nullptr) contexts_->compress = ZSTD_createCCtx();
   if (contexts_->compress == nullptr) throw std::bad_alloc();
   codesToBytes(frame.codes, kWrittenEncoding, scratch_);
@@ -148,7 +147,7 @@ void FrameCodec::encodeRecord(std::uint64_t seq, std::int64_t captureTsNs,
   meta.set_gain(frame.gain);
   meta.set_width_px(std::uint32_t(frame.width));
   meta.set_height_px(std::uint32_t(frame.height));
-  meta.set_pixel_format(calib::pixelFormatName(frame.format));
+  meta.set_pixel_format(pixelFormatName(frame.format));
   meta.set_sample_encoding(kWrittenEncoding);
   meta.set_compressed_bytes(compressedBytes);
   meta.set_uncompressed_bytes(scratch_.size());
@@ -190,7 +189,7 @@ bool FrameCodec::decode(std::span<const std::byte> payload, const RecordingHeade
   }
   out.seq = m.seq();
   out.captureTsNs = m.capture_ts_ns();
-  calib::RawFrame& frame = out.frame;
+  RawFrame& frame = out.frame;
   frame.width = header.sensorWidthPx;
   frame.height = header.sensorHeightPx;
   frame.format = header.pixelFormat;

@@ -16,8 +16,8 @@
 #include <span>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
 #include "core/light.h"
+#include "frames/raw_frame.h"
 #include "recording/read_limits.h"
 #include "recording/recording_header.h"
 
@@ -29,7 +29,7 @@ inline constexpr int kDefaultZstdLevel = 1;
 struct RecordedFrame {
   std::uint64_t seq = 0;          // the camera's frame sequence number
   std::int64_t captureTsNs = 0;   // capture time, ns on the writer's clock
-  calib::RawFrame frame;
+  RawFrame frame;
   std::optional<LightSet> lights;
 };
 
@@ -51,7 +51,7 @@ class FrameCodec {
 
   // The whole frame record into `record` (replaced). The frame must match the header's size and
   // pixel format, with width x height x channels codes (checked by the caller).
-  void encodeRecord(std::uint64_t seq, std::int64_t captureTsNs, const calib::RawFrame& frame,
+  void encodeRecord(std::uint64_t seq, std::int64_t captureTsNs, const RawFrame& frame,
                     const LightSet* lights, std::vector<std::byte>& record);
 
   // The metadata of a frame payload whose record CRC matched; nullopt when it does not fit

@@ -21,8 +21,8 @@ std::string headerProblem(const RecordingHeader& header, const ReadLimits& limit
            std::to_string(header.sensorHeightPx) + " pixels (expected 1 to " +
            std::to_string(kMaxFrameSidePx) + " on each side)";
   }
-  const std::string format = calib::pixelFormatName(header.pixelFormat);
-  if (!calib::parsePixelFormat(format) || calib::parsePixelFormat(format) != header.pixelFormat) {
+  const std::string format = pixelFormatName(header.pixelFormat);
+  if (!parsePixelFormat(format) || parsePixelFormat(format) != header.pixelFormat) {
     return "the pixel format is not one of Mono8/10/12/16 or RGB8/10/12/16";
   }
   if (frameBytes(header) > limits.maxFrameBytes) {
@@ -42,7 +42,7 @@ std::vector<std::byte> encodeHeaderRecord(const RecordingHeader& header) {
   message.set_camera_serial(header.cameraSerial);
   message.set_sensor_width_px(std::uint32_t(header.sensorWidthPx));
   message.set_sensor_height_px(std::uint32_t(header.sensorHeightPx));
-  message.set_pixel_format(calib::pixelFormatName(header.pixelFormat));
+  message.set_pixel_format(pixelFormatName(header.pixelFormat));
   message.set_nominal_rate_hz(header.nominalRateHz);
   message.set_calibration_toml(header.calibrationToml);
   message.set_created_unix_ns(header.createdUnixNs);
@@ -79,7 +79,7 @@ DecodedHeader decodeHeaderPayload(std::span<const std::byte> payload, const Read
   h.createdUnixNs = message.created_unix_ns();
   h.writerName = message.writer_name();
   h.writerVersion = message.writer_version();
-  const auto format = calib::parsePixelFormat(message.pixel_format());
+  const auto format = parsePixelFormat(message.pixel_format());
   if (!format) {
     decoded.status = HeaderStatus::BadValues;
     decoded.problem = "the pixel format '" + message.pixel_format().substr(0, 40) +

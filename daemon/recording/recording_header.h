@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 #include "recording/read_limits.h"
 
 namespace vem::recording {
@@ -27,7 +27,7 @@ struct RecordingHeader {
   std::string cameraSerial;
   int sensorWidthPx = 0;
   int sensorHeightPx = 0;
-  calib::PixelFormat pixelFormat;
+  PixelFormat pixelFormat;
   double nominalRateHz = 0.0;
   std::string calibrationToml;
   std::int64_t createdUnixNs = 0;

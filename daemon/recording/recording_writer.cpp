@@ -96,13 +96,13 @@ RecordingFailure RecordingWriter::writeFailure(const std::string& what, int erro
                                            " frames before it stay readable"};
 }
 
-std::string RecordingWriter::frameProblem(std::uint64_t seq, const calib::RawFrame& frame) const {
+std::string RecordingWriter::frameProblem(std::uint64_t seq, const RawFrame& frame) const {
   if (frame.width != header_.sensorWidthPx || frame.height != header_.sensorHeightPx ||
       frame.format != header_.pixelFormat) {
     return "the frame is " + std::to_string(frame.width) + " x " + std::to_string(frame.height) +
-           " " + calib::pixelFormatName(frame.format) + " (expected the header's " +
+           " " + pixelFormatName(frame.format) + " (expected the header's " +
            std::to_string(header_.sensorWidthPx) + " x " + std::to_string(header_.sensorHeightPx) +
-           " " + calib::pixelFormatName(header_.pixelFormat) + ")";
+           " " + pixelFormatName(header_.pixelFormat) + ")";
   }
   if (frame.codes.size() != frameBytes(header_) / 2) {
     return "the frame holds " + std::to_string(frame.codes.size()) + " codes (expected " +
@@ -117,7 +117,7 @@ std::string RecordingWriter::frameProblem(std::uint64_t seq, const calib::RawFra
 
 std::expected<void, RecordingFailure> RecordingWriter::append(std::uint64_t seq,
                                                               std::int64_t captureTsNs,
-                                                              const calib::RawFrame& frame,
+                                                              const RawFrame& frame,
                                                               const LightSet* lights) {
   if (!fd_.valid()) {
     return std::unexpected(RecordingFailure{

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
 #include "core/light.h"
+#include "frames/raw_frame.h"
 #include "recording/frame_codec.h"
 #include "recording/recording_failure.h"
 #include "recording/recording_header.h"
@@ -52,7 +52,7 @@ class RecordingWriter {
   // the previous frame's.
   [[nodiscard]] std::expected<void, RecordingFailure> append(std::uint64_t seq,
                                                              std::int64_t captureTsNs,
-                                                             const calib::RawFrame& frame,
+                                                             const RawFrame& frame,
                                                              const LightSet* lights = nullptr);
   // Writes the index and footer, syncs and closes. The writer is closed afterwards even on error
   // (the file then stays readable without an index; `vemtool recover` can add one).
@@ -69,7 +69,7 @@ class RecordingWriter {
   [[nodiscard]] std::expected<void, int> writeAtEnd(const std::vector<std::byte>& bytes);
   // "cannot write `what` (cause); the N frames before it stay readable"
   [[nodiscard]] RecordingFailure writeFailure(const std::string& what, int error) const;
-  [[nodiscard]] std::string frameProblem(std::uint64_t seq, const calib::RawFrame& frame) const;
+  [[nodiscard]] std::string frameProblem(std::uint64_t seq, const RawFrame& frame) const;
 
   std::filesystem::path path_;
   std::string name_;  // path_ made printable (util/printable.h), for messages

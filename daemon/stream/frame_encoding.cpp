@@ -8,10 +8,10 @@
 
 #include "core/color.h"
 #include "core/cube_map_lookup.h"
+#include "frames/published_lights.h"
 #include "proto/stream_protocol.h"
 #include "proto/texel_packing.h"
 #include "util/contract.h"
-#include "vemd/sinks/published_lights.h"
 
 namespace vem::stream {
 namespace {
@@ -91,9 +91,9 @@ void toneMapInto(const std::vector<glm::vec3>& disc, std::string& bytes) {
 
 }  // namespace
 
-ServerMessage lightFrameMessage(const vemd::ProcessedFrame& frame, const LightFrameStamp& stamp) {
+ServerMessage lightFrameMessage(const ProcessedFrame& frame, const LightFrameStamp& stamp) {
   VEM_EXPECTS(frame.captured != nullptr);
-  const vemd::PublishedLights published = vemd::publishedLights(frame);
+  const PublishedLights published = publishedLights(frame);
   const std::vector<Light>& lights = published.lights->lights;
   ServerMessage message;
   LightFrame& out = *message.mutable_lights();

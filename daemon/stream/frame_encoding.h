@@ -5,7 +5,7 @@
 // Conventions: directions unit, in the world frame of env_map.h (right-handed, +Y up); rgb in
 // light.h's units (map units x sr); times in nanoseconds, *UnixNs on CLOCK_REALTIME, capture_ts_ns
 // on the source's clock. Light frames carry exactly the lights the JSON-lines sink writes
-// (vemd/sinks/published_lights.h): the filtered set when the frame has one, else its own lights, in
+// (frames/published_lights.h): the filtered set when the frame has one, else its own lights, in
 // id order, and the clustering of that set when present.
 #pragma once
 
@@ -15,8 +15,8 @@
 
 #include "core/cube_map.h"
 #include "core/env_map.h"
+#include "frames/processed_frame.h"
 #include "proto/vem_stream.pb.h"
-#include "vemd/processed_frame.h"
 
 namespace vem::stream {
 
@@ -30,7 +30,7 @@ struct LightFrameStamp {
 
 // A ServerMessage holding a LightFrame (protocol version not yet set: see serialize).
 // `frame.captured` must not be null.
-[[nodiscard]] ServerMessage lightFrameMessage(const vemd::ProcessedFrame& frame,
+[[nodiscard]] ServerMessage lightFrameMessage(const ProcessedFrame& frame,
                                               const LightFrameStamp& stamp);
 
 // A ServerMessage holding an EnvironmentFrame of `cube` (all its levels; face size and level count

@@ -6,27 +6,25 @@
 #include <fmt/format.h>
 
 #include "stream/client_message_handler.h"
-#include "stream/frame_encoding.h"
 
 namespace vem::stream {
 
-RecordingSwitch::RecordingSwitch(std::filesystem::path folder, vemd::RecordingContext context,
-                                 recording::WriterOptions options)
-    : folder_(std::move(folder)), context_(std::move(context)), options_(options) {}
+RecordingSwitch::RecordingSwitch(std::filesystem::path folder, OpenRecording openRecording)
+    : folder_(std::move(folder)), openRecording_(std::move(openRecording)) {}
 
-std::expected<void, vemd::SinkFailure> RecordingSwitch::consume(const vemd::ProcessedFrame& frame) {
-  if (!recorder_) return {};
-  if (auto written = recorder_->consume(frame); !written) {
+std::expected<void, SinkFailure> RecordingSwitch::consume(const ProcessedFrame& frame) {
+  if (!recording()) return {};
+  if (auto written = recorder_.sink->consume(frame); !written) {
     failure_ = std::move(written.error().message);
-    recorder_.reset();  // the recorder closed its file when it failed
+    recorder_ = {};  // the recorder closed its file when it failed
   }
   return {};
 }
 
-std::expected<void, vemd::SinkFailure> RecordingSwitch::close() {
-  if (!recorder_) return {};
-  auto closed = recorder_->close();
-  recorder_.reset();
+std::expected<void, SinkFailure> RecordingSwitch::close() {
+  if (!recording()) return {};
+  auto closed = recorder_.sink->close();
+  recorder_ = {};
   if (!closed) return std::unexpected(std::move(closed.error()));
   return {};
 }
@@ -35,9 +33,9 @@ std::expected<std::filesystem::path, std::string> RecordingSwitch::start(const s
   if (std::string problem = recordingNameProblem(name); !problem.empty()) {
     return std::unexpected(std::move(problem));
   }
-  if (recorder_) {
+  if (recording()) {
     return std::unexpected(
-        fmt::format("a recording is already running ({})", recorder_->path().string()));
+        fmt::format("a recording is already running ({})", recorder_.path.string()));
   }
   std::error_code error;
   std::filesystem::create_directories(folder_, error);
@@ -46,22 +44,17 @@ std::expected<std::filesystem::path, std::string> RecordingSwitch::start(const s
                                        folder_.string(),
                                        error ? error.message() : "it is not a folder"));
   }
-  std::filesystem::path path;
-  if (name.empty()) {
-    path = vemd::recordingPathFor(folder_, unixNowNs());
-  } else {
-    path = folder_ / name;
-    if (!path.has_extension()) path += ".vem";
-  }
-  auto recorder = vemd::RecorderSink::create(path, context_, options_);
+  std::filesystem::path fileName = name;
+  if (!name.empty() && !fileName.has_extension()) fileName += ".vem";
+  auto recorder = openRecording_(folder_, fileName.string());
   if (!recorder) return std::unexpected(std::move(recorder.error().message));
-  recorder_.emplace(std::move(*recorder));
-  return path;
+  recorder_ = std::move(*recorder);
+  return recorder_.path;
 }
 
 std::expected<std::filesystem::path, std::string> RecordingSwitch::stop() {
-  if (!recorder_) return std::unexpected(std::string("no recording is running"));
-  const std::filesystem::path path = recorder_->path();
+  if (!recording()) return std::unexpected(std::string("no recording is running"));
+  const std::filesystem::path path = recorder_.path;
   if (auto closed = close(); !closed) return std::unexpected(std::move(closed.error().message));
   return path;
 }

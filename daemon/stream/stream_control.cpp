@@ -6,8 +6,8 @@
 #include <spdlog/spdlog.h>
 
 #include "core/fir_design.h"
+#include "frames/frame_source.h"
 #include "util/printable.h"
-#include "vemd/frame_source.h"
 
 namespace vem::stream {
 
@@ -17,13 +17,13 @@ constexpr std::int64_t kStalledAfterNs = 2'000'000'000;
 
 // The source's state for Status: the capture thread's current failure when there is one;
 // otherwise TIMEOUT when no frame was processed for kStalledAfterNs (a source that blocks).
-SourceState sourceState(const vemd::LoopCounters& counters, std::int64_t nowNs) {
+SourceState sourceState(const LoopCounters& counters, std::int64_t nowNs) {
   if (counters.sourceFailure) {
     switch (*counters.sourceFailure) {
-      case vemd::SourceErrorCause::EndOfStream: return SOURCE_STATE_ENDED;
-      case vemd::SourceErrorCause::NoDevice: return SOURCE_STATE_NO_DEVICE;
-      case vemd::SourceErrorCause::Timeout: return SOURCE_STATE_TIMEOUT;
-      case vemd::SourceErrorCause::BadFrame: return SOURCE_STATE_NO_SIGNAL;
+      case SourceErrorCause::EndOfStream: return SOURCE_STATE_ENDED;
+      case SourceErrorCause::NoDevice: return SOURCE_STATE_NO_DEVICE;
+      case SourceErrorCause::Timeout: return SOURCE_STATE_TIMEOUT;
+      case SourceErrorCause::BadFrame: return SOURCE_STATE_NO_SIGNAL;
     }
   }
   const bool stalled =
@@ -41,7 +41,7 @@ StreamControl::StreamControl(StreamServer& server, StreamSink& sink, RecordingSw
       identity_(std::move(identity)),
       statusEveryNs_(statusEveryNs) {}
 
-void StreamControl::betweenFrames(vemd::Pipeline& pipeline, const vemd::LoopCounters& counters) {
+void StreamControl::betweenFrames(PipelineControl& pipeline, const LoopCounters& counters) {
   for (PendingControl& pending : server_.takeControls()) {
     const std::string problem = apply(pipeline, pending.command);
     ControlReply reply;
@@ -57,15 +57,15 @@ void StreamControl::betweenFrames(vemd::Pipeline& pipeline, const vemd::LoopCoun
     }
   }
   sink_.setStamp({pipeline.filterDelayFrames()});
-  const std::int64_t nowNs = vemd::monotonicNowNs();
+  const std::int64_t nowNs = monotonicNowNs();
   if (nowNs >= nextStatusNs_) {
     publishStatus(pipeline, counters, nowNs);
     nextStatusNs_ = nowNs + statusEveryNs_;
   }
 }
 
-std::string StreamControl::apply(vemd::Pipeline& pipeline, const Control& command) {
-  vemd::ProcessingOptions options = pipeline.options();
+std::string StreamControl::apply(PipelineControl& pipeline, const Control& command) {
+  ProcessingOptions options = pipeline.options();
   switch (command.action_case()) {
     case Control::kSetLightCount:
       options.lightCount = command.set_light_count();
@@ -109,8 +109,7 @@ std::string StreamControl::apply(vemd::Pipeline& pipeline, const Control& comman
   return "the control message has no action";
 }
 
-std::string StreamControl::reconfigure(vemd::Pipeline& pipeline,
-                                       const vemd::ProcessingOptions& options,
+std::string StreamControl::reconfigure(PipelineControl& pipeline, const ProcessingOptions& options,
                                        const std::string& change) {
   if (options == pipeline.options()) return {};
   if (auto done = pipeline.reconfigure(options); !done) return done.error();
@@ -118,10 +117,10 @@ std::string StreamControl::reconfigure(vemd::Pipeline& pipeline,
   return {};
 }
 
-void StreamControl::publishStatus(const vemd::Pipeline& pipeline,
-                                  const vemd::LoopCounters& counters, std::int64_t nowNs) {
+void StreamControl::publishStatus(const PipelineControl& pipeline, const LoopCounters& counters,
+                                  std::int64_t nowNs) {
   const SinkWindow window = sink_.takeWindow(nowNs);
-  const vemd::ProcessingOptions& options = pipeline.options();
+  const ProcessingOptions& options = pipeline.options();
   Status status;
   status.set_source(identity_.source);
   status.set_state(sourceState(counters, nowNs));

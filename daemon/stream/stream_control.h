@@ -1,10 +1,10 @@
 // StreamControl: the stream's work between frames on vemd's processing thread
-// (vemd::LoopControl, daemon_loop.h): applies the control messages clients sent (they wait in the
+// (LoopControl, daemon_loop.h): applies the control messages clients sent (they wait in the
 // server's inbox), refreshes what the stream sink stamps on light frames, and publishes a status
 // about once a second.
 //
 // Control: set_light_count, set_cluster_budget (0: clustering off) and set_filter reconfigure the
-// pipeline (Pipeline::reconfigure: only what changed is reset); start_recording and
+// pipeline (PipelineControl::reconfigure: only what changed is reset); start_recording and
 // stop_recording switch the RecordingSwitch. Each request gets one ControlReply (ok, or why not in
 // one sentence) and each applied change one log line.
 //
@@ -15,10 +15,10 @@
 #include <cstdint>
 #include <string>
 
+#include "frames/loop_control.h"
 #include "stream/recording_switch.h"
 #include "stream/stream_server.h"
 #include "stream/stream_sink.h"
-#include "vemd/daemon_loop.h"
 
 namespace vem::stream {
 
@@ -27,22 +27,22 @@ struct StreamIdentity {
   std::string calibrationId;  // stream_setup.h calibrationId
 };
 
-class StreamControl final : public vemd::LoopControl {
+class StreamControl final : public LoopControl {
  public:
   // `recorder` may be null (no recording by control: start_recording is refused).
   StreamControl(StreamServer& server, StreamSink& sink, RecordingSwitch* recorder,
                 StreamIdentity identity, std::int64_t statusEveryNs = 1'000'000'000);
 
-  void betweenFrames(vemd::Pipeline& pipeline, const vemd::LoopCounters& counters) override;
+  void betweenFrames(PipelineControl& pipeline, const LoopCounters& counters) override;
 
   [[nodiscard]] std::uint64_t statusesPublished() const { return statusesPublished_; }
 
  private:
   // Empty when applied, else why not.
-  std::string apply(vemd::Pipeline& pipeline, const Control& command);
-  std::string reconfigure(vemd::Pipeline& pipeline, const vemd::ProcessingOptions& options,
+  std::string apply(PipelineControl& pipeline, const Control& command);
+  std::string reconfigure(PipelineControl& pipeline, const ProcessingOptions& options,
                           const std::string& change);
-  void publishStatus(const vemd::Pipeline& pipeline, const vemd::LoopCounters& counters,
+  void publishStatus(const PipelineControl& pipeline, const LoopCounters& counters,
                      std::int64_t nowNs);
 
   StreamServer& server_;

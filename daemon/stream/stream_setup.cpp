@@ -7,12 +7,9 @@
 #include <utility>
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
-#include "stream/recording_switch.h"
-#include "stream/stream_sink.h"
+#include "core/default_pattern.h"
 #include "util/printable.h"
-#include "vemd/daemon_setup.h"
 
 namespace vem::stream {
 
@@ -42,24 +39,24 @@ std::expected<std::string, std::string> readTokenFile(const fs::path& path) {
     return std::unexpected(fmt::format("stream.token_file: {} is empty", name));
   }
   token = token.substr(first, token.find_last_not_of(" \t\r\n") - first + 1);
-  if (auto problem = vemd::streamTokenProblem(token)) {
+  if (auto problem = streamTokenProblem(token)) {
     return std::unexpected(fmt::format("stream.token_file: {}: expected {}, found {}", name,
-                                       vemd::streamTokenExpected(), *problem));
+                                       streamTokenExpected(), *problem));
   }
   return token;
 }
 
-std::expected<std::string, std::string> streamToken(const vemd::StreamConfig& config) {
+std::expected<std::string, std::string> streamToken(const StreamSettings& config) {
   if (!config.tokenFile.empty()) return readTokenFile(config.tokenFile);
   if (config.token.empty()) return config.token;
-  if (auto problem = vemd::streamTokenProblem(config.token)) {
+  if (auto problem = streamTokenProblem(config.token)) {
     return std::unexpected(
-        fmt::format("stream.token: expected {}, found {}", vemd::streamTokenExpected(), *problem));
+        fmt::format("stream.token: expected {}, found {}", streamTokenExpected(), *problem));
   }
   return config.token;
 }
 
-std::string calibrationId(const vemd::SourceDescription& source) {
+std::string calibrationId(const SourceDescription& source) {
   if (source.calibrationToml.empty()) return "none";
   std::uint64_t hash = 0xcbf29ce484222325ULL;
   for (const char c : source.calibrationToml) {
@@ -68,9 +65,9 @@ std::string calibrationId(const vemd::SourceDescription& source) {
   return fmt::format("{} {} #{:016x}", source.cameraModel, source.cameraSerial, hash);
 }
 
-std::expected<StreamServerOptions, std::string> serverOptions(
-    const vemd::StreamConfig& config, const vemd::SourceDescription& source) {
-  const auto address = vemd::parseListenAddress(config.listen);
+std::expected<StreamServerOptions, std::string> serverOptions(const StreamSettings& config,
+                                                              const SourceDescription& source) {
+  const auto address = parseListenAddress(config.listen);
   if (!address) {
     return std::unexpected(fmt::format("stream.listen: {} is not IP:PORT", config.listen));
   }
@@ -101,52 +98,6 @@ std::expected<StreamServerOptions, std::string> serverOptions(
   options.hello.set_calibration_id(calibrationId(source));
   options.hello.set_max_lights(kMaxLights);
   return options;
-}
-
-fs::path controlRecordingFolder(const vemd::VemdConfig& config) {
-  if (!config.stream.recordDir.empty()) return config.stream.recordDir;
-  const fs::path dir = config.output.dir.empty() ? fs::path(".") : fs::path(config.output.dir);
-  if (!config.output.record.empty()) {
-    const fs::path record = fs::path(config.output.record).is_absolute()
-                                ? fs::path(config.output.record)
-                                : dir / config.output.record;
-    std::error_code error;
-    return fs::is_directory(record, error) ? record : record.parent_path();
-  }
-  return dir;
-}
-
-std::expected<Streaming, std::string> startStreaming(
-    const vemd::VemdConfig& config, const vemd::SourceDescription& source,
-    std::vector<std::unique_ptr<vemd::Sink>>& sinks) {
-  Streaming streaming;
-  if (!config.stream.enabled || config.stream.listen.empty()) return streaming;
-  auto options = serverOptions(config.stream, source);
-  if (!options) return std::unexpected(options.error());
-  const bool tlsAsked = !options->tlsCertFile.empty();
-  auto server = StreamServer::start(std::move(*options));
-  if (!server) {
-    if (tlsAsked && server.error().starts_with("stream.tls"))
-      return std::unexpected(server.error());
-    if (!config.output.allowMissing) {
-      return std::unexpected(vemd::missingOutputRefused(server.error()));
-    }
-    spdlog::warn("{}", vemd::missingOutputAllowed(server.error()));
-    return streaming;
-  }
-  streaming.server = std::move(*server);
-  spdlog::info("streaming on {}", streaming.server->url());
-  auto sink = std::make_unique<StreamSink>(
-      *streaming.server, StreamSinkOptions{int(config.stream.cubemapZstdLevel), 256});
-  recording::WriterOptions writerOptions;
-  writerOptions.syncEveryFrames = std::uint32_t(config.output.recordSyncEvery);
-  auto recorder = std::make_unique<RecordingSwitch>(controlRecordingFolder(config),
-                                                    vemd::recordingContext(source), writerOptions);
-  streaming.control = std::make_unique<StreamControl>(
-      *streaming.server, *sink, recorder.get(), StreamIdentity{source.spec, calibrationId(source)});
-  sinks.push_back(std::move(recorder));
-  sinks.push_back(std::move(sink));
-  return streaming;
 }
 
 }  // namespace vem::stream

@@ -4,10 +4,10 @@
 #include <memory>
 #include <utility>
 
+#include "frames/frame_source.h"
+#include "frames/published_lights.h"
 #include "stream/frame_encoding.h"
 #include "util/contract.h"
-#include "vemd/frame_source.h"
-#include "vemd/sinks/published_lights.h"
 
 namespace vem::stream {
 
@@ -24,12 +24,12 @@ SharedBytes shared(ServerMessage message) {
 StreamSink::StreamSink(StreamServer& server, StreamSinkOptions options)
     : server_(server),
       options_(options),
-      windowStartNs_(vemd::monotonicNowNs()),
+      windowStartNs_(monotonicNowNs()),
       worker_(server, CubemapWorkerOptions{options.zstdLevel, options.previewWidthPx}) {}
 
-std::expected<void, vemd::SinkFailure> StreamSink::consume(const vemd::ProcessedFrame& frame) {
+std::expected<void, SinkFailure> StreamSink::consume(const ProcessedFrame& frame) {
   VEM_EXPECTS(frame.captured != nullptr);
-  const std::int64_t nowNs = vemd::monotonicNowNs();
+  const std::int64_t nowNs = monotonicNowNs();
   const std::int64_t nowUnixNs = unixNowNs();
   LightFrameStamp stamp;
   stamp.captureUnixNs = nowUnixNs - (nowNs - frame.captured->arrivalNs);
@@ -39,15 +39,15 @@ std::expected<void, vemd::SinkFailure> StreamSink::consume(const vemd::Processed
   server_.publishLights(shared(lightFrameMessage(frame, stamp)));
   ++framesPublished_;
   ++windowFrames_;
-  lightsInLastFrame_ = std::uint32_t(vemd::publishedLights(frame).lights->lights.size());
+  lightsInLastFrame_ = std::uint32_t(publishedLights(frame).lights->lights.size());
   if (windowLatenciesMs_.size() < kMaxWindowSamples) {
-    windowLatenciesMs_.push_back(double(vemd::monotonicNowNs() - frame.captured->arrivalNs) * 1e-6);
+    windowLatenciesMs_.push_back(double(monotonicNowNs() - frame.captured->arrivalNs) * 1e-6);
   }
   publishCubemaps(frame, nowNs);
   return {};
 }
 
-void StreamSink::publishCubemaps(const vemd::ProcessedFrame& frame, std::int64_t nowNs) {
+void StreamSink::publishCubemaps(const ProcessedFrame& frame, std::int64_t nowNs) {
   const CubemapDemand demand = server_.cubemapDemand();
   std::erase_if(nextCubemapDueNs_, [&](const auto& entry) {
     return std::ranges::find(demand.variants, entry.first, &VariantDemand::variant) ==

@@ -1,5 +1,5 @@
 // StreamSink: vemd's processed frames to the stream server (stream_server.h), on the processing
-// thread like every sink (vemd/sink.h).
+// thread like every sink (frames/sink.h).
 //
 // - Per frame, the light frame message is built and serialized once (frame_encoding.h: exactly
 //   the lights the JSON-lines sink writes) and handed to the server, which never waits for a
@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
+#include "frames/sink.h"
 #include "stream/cubemap_worker.h"
 #include "stream/stream_server.h"
 #include "stream/subscription.h"
-#include "vemd/sink.h"
 
 namespace vem::stream {
 
@@ -42,14 +42,13 @@ struct SinkWindow {
   double latencyMedianMs = 0.0;  // arrival in vemd to the light frame handed to the server
 };
 
-class StreamSink final : public vemd::Sink {
+class StreamSink final : public Sink {
  public:
   StreamSink(StreamServer& server, StreamSinkOptions options);
 
   [[nodiscard]] std::string name() const override { return "stream"; }
-  [[nodiscard]] std::expected<void, vemd::SinkFailure> consume(
-      const vemd::ProcessedFrame& frame) override;
-  [[nodiscard]] std::expected<void, vemd::SinkFailure> close() override { return {}; }
+  [[nodiscard]] std::expected<void, SinkFailure> consume(const ProcessedFrame& frame) override;
+  [[nodiscard]] std::expected<void, SinkFailure> close() override { return {}; }
 
   void setStamp(const ProcessingStamp& stamp) { stamp_ = stamp; }
   [[nodiscard]] SinkWindow takeWindow(std::int64_t nowMonotonicNs);
@@ -63,7 +62,7 @@ class StreamSink final : public vemd::Sink {
   [[nodiscard]] std::uint32_t lightsInLastFrame() const { return lightsInLastFrame_; }
 
  private:
-  void publishCubemaps(const vemd::ProcessedFrame& frame, std::int64_t nowNs);
+  void publishCubemaps(const ProcessedFrame& frame, std::int64_t nowNs);
 
   StreamServer& server_;
   StreamSinkOptions options_;

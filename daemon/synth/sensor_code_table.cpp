@@ -5,7 +5,7 @@
 namespace vem::synth {
 
 SensorCodeTable::SensorCodeTable(const calib::PhotometricCalibration& photometric,
-                                 calib::PixelFormat format, double exposureUs, double gain)
+                                 PixelFormat format, double exposureUs, double gain)
     : photometric_(photometric), exposureUs_(exposureUs), gain_(gain) {
   constexpr double kTolerance = 0.01;  // codes
   for (int c = 0; c < format.channels; ++c) {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "calib/core/photometric_model.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::synth {
 
@@ -30,7 +30,7 @@ class SensorCodeTable {
   static constexpr float kLowestCdM2 = 0x1p-40F;
   static constexpr float kHighestCdM2 = 0x1p+40F;
 
-  SensorCodeTable(const calib::PhotometricCalibration& photometric, calib::PixelFormat format,
+  SensorCodeTable(const calib::PhotometricCalibration& photometric, PixelFormat format,
                   double exposureUs, double gain);
 
   // Inline: the synthetic camera calls it for every pixel and channel.

@@ -106,14 +106,13 @@ const SensorCodeTable& SyntheticCamera::codeTable(double exposureUs, double gain
   return *table_;
 }
 
-calib::RawFrame SyntheticCamera::render(const SceneState& state, std::uint64_t frameIndex) {
-  calib::RawFrame frame;
+RawFrame SyntheticCamera::render(const SceneState& state, std::uint64_t frameIndex) {
+  RawFrame frame;
   render(state, frameIndex, frame);
   return frame;
 }
 
-void SyntheticCamera::render(const SceneState& state, std::uint64_t frameIndex,
-                             calib::RawFrame& frame) {
+void SyntheticCamera::render(const SceneState& state, std::uint64_t frameIndex, RawFrame& frame) {
   const calib::CameraIdentity& camera = calibration_.camera;
   frame.width = camera.sensorWidthPx;
   frame.height = camera.sensorHeightPx;
@@ -135,7 +134,7 @@ void SyntheticCamera::render(const SceneState& state, std::uint64_t frameIndex,
 
 template <bool kNoisy, int kChannels>
 void SyntheticCamera::renderCodes(const SceneState& state, const SensorCodeTable& table,
-                                  std::uint64_t frameIndex, calib::RawFrame& frame) const {
+                                  std::uint64_t frameIndex, RawFrame& frame) const {
   const calib::PhotometricCalibration& photometric = *calibration_.photometric;
   const auto saturation = float(photometric.saturationCode);
   const auto black = float(photometric.blackLevelCode);

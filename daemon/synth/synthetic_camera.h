@@ -31,7 +31,7 @@
 
 #include "calib/core/camera_calibration.h"
 #include "calib/core/camera_simulator.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 #include "synth/sensor_code_table.h"
 #include "synth/synthetic_scene.h"
 
@@ -54,9 +54,9 @@ class SyntheticCamera {
                            SyntheticCameraOptions options = {});
 
   // The frame for `state`, taken with its exposure and gain; frameIndex picks the noise draw.
-  [[nodiscard]] calib::RawFrame render(const SceneState& state, std::uint64_t frameIndex = 0);
+  [[nodiscard]] RawFrame render(const SceneState& state, std::uint64_t frameIndex = 0);
   // The same into `frame`, reusing its storage.
-  void render(const SceneState& state, std::uint64_t frameIndex, calib::RawFrame& frame);
+  void render(const SceneState& state, std::uint64_t frameIndex, RawFrame& frame);
 
   [[nodiscard]] const calib::CameraCalibration& calibration() const { return calibration_; }
   // Pixels with at least one sample inside the lens circle.
@@ -67,7 +67,7 @@ class SyntheticCamera {
   [[nodiscard]] const SensorCodeTable& codeTable(double exposureUs, double gain);
   template <bool kNoisy, int kChannels>
   void renderCodes(const SceneState& state, const SensorCodeTable& table, std::uint64_t frameIndex,
-                   calib::RawFrame& frame) const;
+                   RawFrame& frame) const;
 
   calib::CameraCalibration calibration_;
   SyntheticCameraOptions options_;

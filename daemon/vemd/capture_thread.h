@@ -19,10 +19,10 @@
 #include <optional>
 #include <thread>
 
+#include "frames/captured_frame.h"
+#include "frames/frame_source.h"
 #include "util/backoff.h"
-#include "vemd/captured_frame.h"
 #include "vemd/frame_queue.h"
-#include "vemd/frame_source.h"
 #include "vemd/pacer.h"
 
 namespace vem::vemd {

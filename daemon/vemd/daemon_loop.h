@@ -17,8 +17,9 @@
 // - Stop: `stopRequested` (set from a signal handler, say) is polled at least every
 //   kPollInterval; the current frame finishes, the capture thread is woken and joined, the sinks
 //   are closed, and the final report is logged.
-// - Control between frames: a LoopControl (optional) is called on the processing thread before
-//   the first frame, after every frame and at least every kPollInterval, never during a frame:
+// - Control between frames: a LoopControl (optional, frames/loop_control.h) is called on the
+//   processing thread before the first frame, after every frame and at least every kPollInterval,
+//   never during a frame:
 //   the place where requests from other threads (the stream server's control messages) change
 //   the pipeline and where a status is published.
 // - A paced source with a nominal rate that delivers below 90 % of it over 3 s is warned about
@@ -34,7 +35,8 @@
 #include <optional>
 #include <string>
 
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
+#include "frames/loop_control.h"
 #include "vemd/loop_statistics.h"
 #include "vemd/pipeline.h"
 #include "vemd/sink_set.h"
@@ -64,24 +66,6 @@ class LoopObserver {
     (void)line;
   }
   virtual void stopping() {}
-};
-
-// The loop's running totals, for a LoopControl.
-struct LoopCounters {
-  std::uint64_t processed = 0;
-  std::uint64_t dropped = 0;  // by the queue
-  std::uint64_t refused = 0;  // bad frames
-  std::uint64_t sourceErrors = 0;
-  std::int64_t lastProcessedNs = 0;  // CLOCK_MONOTONIC; 0 before the first frame
-  // Why the source gives no frames now (CaptureThread::failure); empty while frames flow.
-  std::optional<SourceErrorCause> sourceFailure;
-};
-
-// Work done between frames on the processing thread (see above).
-class LoopControl {
- public:
-  virtual ~LoopControl() = default;
-  virtual void betweenFrames(Pipeline& pipeline, const LoopCounters& counters) = 0;
 };
 
 enum class StopReason { EndOfStream, FrameLimit, StopRequested };

@@ -8,8 +8,9 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 #include "util/printable.h"
+#include "vemd/pipeline_setup.h"
 #include "vemd/source_factory.h"
 
 namespace vem::vemd {
@@ -32,8 +33,8 @@ std::optional<std::string> cameraMismatch(const SourceDescription& source,
   }
   return fmt::format("{}: the frames are {} x {} {} but the calibration is for a {} x {} {} camera",
                      source.spec, source.sensorWidthPx, source.sensorHeightPx,
-                     calib::pixelFormatName(source.pixelFormat), camera.sensorWidthPx,
-                     camera.sensorHeightPx, calib::pixelFormatName(camera.pixelFormat));
+                     pixelFormatName(source.pixelFormat), camera.sensorWidthPx,
+                     camera.sensorHeightPx, pixelFormatName(camera.pixelFormat));
 }
 
 // Creates the output folder, so that --out DIR works on a folder that does not exist yet.
@@ -86,7 +87,7 @@ std::optional<std::string> frameMemoryProblem(const SourceDescription& source,
       "{}: its {} x {} {} frames take {:.1f} MiB each, and with source.queue_depth = {} vemd may "
       "hold {} of them ({:.0f} MiB), above its {:.0f} MiB budget for frames; {}",
       util::printable(source.spec), source.sensorWidthPx, source.sensorHeightPx,
-      calib::pixelFormatName(source.pixelFormat), mebibytes(frameBytes), queueDepth,
+      pixelFormatName(source.pixelFormat), mebibytes(frameBytes), queueDepth,
       framesHeld(queueDepth), mebibytes(frameBytes * framesHeld(queueDepth)),
       mebibytes(kFrameMemoryBudgetBytes), remedy);
 }
@@ -146,8 +147,8 @@ std::expected<Daemon, StartupFailure> buildDaemon(const VemdConfig& config,
                config.processing.mapWidth, config.processing.mapHeight, description.sensorWidthPx,
                description.sensorHeightPx);
   auto pipeline =
-      Pipeline::create(description.calibrationToml, description.spec + " (its calibration)",
-                       config.processing, stopRequested);
+      pipelineFromCameraFile(description.calibrationToml, description.spec + " (its calibration)",
+                             config.processing, stopRequested);
   if (stop()) return std::unexpected(stopped("while building the polar remap"));
   if (!pipeline) return std::unexpected(failed(pipeline.error()));
   if (auto mismatch = cameraMismatch(description, pipeline->calibration().camera)) {

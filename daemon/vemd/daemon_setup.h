@@ -19,8 +19,8 @@
 #include <string_view>
 #include <vector>
 
+#include "frames/frame_source.h"
 #include "vemd/daemon_loop.h"
-#include "vemd/frame_source.h"
 #include "vemd/pipeline.h"
 #include "vemd/sink_set.h"
 #include "vemd/sinks/recording_context.h"
@@ -36,7 +36,7 @@ struct Daemon {
   LoopOptions loop;
 };
 
-// Sinks from outside vem_daemon (the stream server's, daemon/stream/stream_setup.h), made once the
+// Sinks from outside vem_daemon (the stream server's, vemd/stream_wiring.h), made once the
 // source is known; they run after the configured ones. A failure stops the build like any other.
 using ExtraSinks = std::function<std::expected<void, std::string>(
     const SourceDescription& source, std::vector<std::unique_ptr<Sink>>& sinks)>;

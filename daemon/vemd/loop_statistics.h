@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "frames/processed_frame.h"
 #include "vemd/frame_queue.h"
-#include "vemd/processed_frame.h"
 
 namespace vem::vemd {
 

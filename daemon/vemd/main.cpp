@@ -1,6 +1,6 @@
 // vemd: the capture daemon. Parses the configuration, builds source, pipeline and sinks, runs the
 // loop until the source ends, --frames is reached, or SIGINT/SIGTERM; streams to render clients
-// ([stream], daemon/stream/stream_setup.h); docs/vemd.md.
+// ([stream], vemd/stream_wiring.h); docs/vemd.md.
 // SIGINT/SIGTERM are caught from before start-up: start-up checks the flag between its steps and
 // the rows of the polar remap (daemon_setup.h), the loop at least every 50 ms.
 // Exit status (util/cli_conventions.h): 0 after a clean stop (also one asked for during start-up),
@@ -20,6 +20,7 @@
 #include "vemd/daemon_setup.h"
 #include "vemd/device_list.h"
 #include "vemd/service_observer.h"
+#include "vemd/stream_wiring.h"
 #include "vemd/vemd_config.h"
 
 namespace {
@@ -66,12 +67,12 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  vem::stream::Streaming streaming;  // outlives the daemon's sinks, which borrow the server
+  Streaming streaming;  // outlives the daemon's sinks, which borrow the server
   auto daemon = buildDaemon(
       *config,
-      [&](const SourceDescription& source,
-          std::vector<std::unique_ptr<Sink>>& sinks) -> std::expected<void, std::string> {
-        auto started = vem::stream::startStreaming(*config, source, sinks);
+      [&](const vem::SourceDescription& source,
+          std::vector<std::unique_ptr<vem::Sink>>& sinks) -> std::expected<void, std::string> {
+        auto started = startStreaming(*config, source, sinks);
         if (!started) return std::unexpected(started.error());
         streaming = std::move(*started);
         return {};

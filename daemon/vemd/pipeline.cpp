@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "calib/io/camera_file.h"
 #include "core/default_pattern.h"
 #include "util/contract.h"
 
@@ -52,36 +51,28 @@ std::optional<std::string> processingOptionsProblem(const ProcessingOptions& o) 
   return std::nullopt;
 }
 
-std::expected<Pipeline, std::string> Pipeline::create(const std::string& calibrationToml,
+std::expected<Pipeline, std::string> Pipeline::create(calib::CameraCalibration calibration,
                                                       const std::string& sourceName,
                                                       const ProcessingOptions& options,
                                                       const std::function<bool()>& stopRequested) {
   if (auto problem = processingOptionsProblem(options)) return std::unexpected(*problem);
-  if (calibrationToml.empty()) {
-    return std::unexpected(fmt::format(
-        "{}: no calibration comes with the frames (vemd needs a camera file with photometric and "
-        "geometric sections)",
-        sourceName));
-  }
-  auto calibration = calib::io::parseCameraFile(calibrationToml, sourceName);
-  if (!calibration) return std::unexpected(calibration.error().message);
-  if (!calibration->photometric) {
+  if (!calibration.photometric) {
     return std::unexpected(fmt::format(
         "{}: the camera file has no photometric section (run vemcalib photometric)", sourceName));
   }
-  if (!calibration->lens) {
+  if (!calibration.lens) {
     return std::unexpected(fmt::format(
         "{}: the camera file has no geometric section (run vemcalib fisheye)", sourceName));
   }
-  auto remap = calib::buildPolarRemap(*calibration->lens, calibration->orientation,
-                                      calibration->camera.sensorWidthPx,
-                                      calibration->camera.sensorHeightPx, MapLayout::Hemisphere,
+  auto remap = calib::buildPolarRemap(*calibration.lens, calibration.orientation,
+                                      calibration.camera.sensorWidthPx,
+                                      calibration.camera.sensorHeightPx, MapLayout::Hemisphere,
                                       options.mapWidth, options.mapHeight, stopRequested);
   if (!remap) {
     return std::unexpected(fmt::format("{}: stopped while building the {} x {} polar remap",
                                        sourceName, options.mapWidth, options.mapHeight));
   }
-  return Pipeline(std::move(*calibration), options, std::move(*remap));
+  return Pipeline(std::move(calibration), options, std::move(*remap));
 }
 
 Pipeline::Pipeline(calib::CameraCalibration calibration, const ProcessingOptions& options,
@@ -110,13 +101,13 @@ std::expected<void, std::string> Pipeline::reconfigure(const ProcessingOptions& 
   return {};
 }
 
-std::optional<std::string> Pipeline::frameProblem(const calib::RawFrame& frame) const {
+std::optional<std::string> Pipeline::frameProblem(const RawFrame& frame) const {
   const calib::CameraIdentity& camera = calibration_.camera;
   if (frame.width != camera.sensorWidthPx || frame.height != camera.sensorHeightPx ||
       frame.format != camera.pixelFormat) {
     return fmt::format("the frame is {} x {} {} but the camera is {} x {} {}", frame.width,
-                       frame.height, calib::pixelFormatName(frame.format), camera.sensorWidthPx,
-                       camera.sensorHeightPx, calib::pixelFormatName(camera.pixelFormat));
+                       frame.height, pixelFormatName(frame.format), camera.sensorWidthPx,
+                       camera.sensorHeightPx, pixelFormatName(camera.pixelFormat));
   }
   const std::size_t expected =
       std::size_t(frame.width) * std::size_t(frame.height) * std::size_t(frame.format.channels);
@@ -128,7 +119,7 @@ std::optional<std::string> Pipeline::frameProblem(const calib::RawFrame& frame) 
     const std::uint16_t highest = std::ranges::max(frame.codes);
     if (highest > frame.format.maxCode()) {
       return fmt::format("the frame holds code {}, above {}'s largest code {}", highest,
-                         calib::pixelFormatName(frame.format), frame.format.maxCode());
+                         pixelFormatName(frame.format), frame.format.maxCode());
     }
   }
   return std::nullopt;
@@ -154,7 +145,7 @@ const ProcessedFrame& Pipeline::process(const CapturedFrame& captured) {
 }
 
 // Codes to luminance (the table follows exposure and gain), then the fisheye into the polar map.
-void Pipeline::calibrate(const calib::RawFrame& frame) {
+void Pipeline::calibrate(const RawFrame& frame) {
   const bool sameSettings =
       lutValid_ && lut_.exposureUs == frame.exposureUs && lut_.gain == frame.gain;
   if (!sameSettings) {

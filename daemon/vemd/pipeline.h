@@ -5,9 +5,10 @@
 //            --tables--> SamplingTables --lights (pattern prefix)--> LightSet
 //            --filter (TemporalFilter::push(seq))--> LightSet --cluster (optional)--> Clustering
 //
-// - Built once per calibration: the camera file's text is parsed here, the polar remap is built
-//   once; the code-to-luminance table is rebuilt only when a frame's exposure or gain differ from
-//   the previous frame's (bit for bit). The sampling tables' storage is recycled frame to frame.
+// - Built once per calibration (the camera file is parsed by the setup, pipeline_setup.h): the
+//   polar remap is built once; the code-to-luminance table is rebuilt only when a frame's exposure
+//   or gain differ from the previous frame's (bit for bit). The sampling tables' storage is
+//   recycled frame to frame.
 // - State over time: only the temporal filter's rings, keyed by the frames' seq (gaps and
 //   duplicates are handled there, temporal_filter.h).
 // - Deterministic: the same frames in the same order give bit-identical lights.
@@ -32,8 +33,10 @@
 #include "core/light_generator.h"
 #include "core/sampling_tables.h"
 #include "core/temporal_filter.h"
-#include "vemd/captured_frame.h"
-#include "vemd/processed_frame.h"
+#include "frames/captured_frame.h"
+#include "frames/loop_control.h"
+#include "frames/processed_frame.h"
+#include "frames/processing_options.h"
 
 namespace vem::vemd {
 
@@ -46,35 +49,22 @@ inline constexpr int kMinMapSide = 4;
 inline constexpr int kMaxMapWidth = 4096;
 inline constexpr int kMaxMapHeight = 2048;
 
-struct ProcessingOptions {
-  int mapWidth = 1024;  // polar (hemisphere) map columns, over the azimuth
-  int mapHeight = 256;  // rows, zenith to horizon
-  std::size_t lightCount = 1024;
-  SamplerKind sampler = SamplerKind::Havran;
-  FilterPreset filter = FilterPreset::Paper9;
-  bool clustering = true;
-  int clusterBudget = 72;  // Q: about Q clusters over the hemisphere
-  double clusterCorrectionFactor = kDefaultClusterCorrectionFactor;
-
-  friend bool operator==(const ProcessingOptions&, const ProcessingOptions&) = default;
-};
-
 // Stage names in the order they run, as ProcessedFrame::timings lists them.
 inline constexpr const char* kStageNames[] = {"calibrate", "tables", "lights", "filter", "cluster"};
 
-class Pipeline {
+class Pipeline final : public PipelineControl {
  public:
-  // Parses the camera file (`sourceName` names it in messages) and builds the remap. Fails with
-  // one sentence when the file does not load, lacks its photometric or geometric section, or
-  // the options are out of range. `stopRequested`, when given, is asked between the rows of the
+  // Builds the remap for `calibration` (`sourceName` names its camera in messages). Fails with
+  // one sentence when the calibration lacks its photometric or geometric section, or the options
+  // are out of range. `stopRequested`, when given, is asked between the rows of the
   // remap (the long part of start-up): true abandons the build, which then fails saying so.
   [[nodiscard]] static std::expected<Pipeline, std::string> create(
-      const std::string& calibrationToml, const std::string& sourceName,
+      calib::CameraCalibration calibration, const std::string& sourceName,
       const ProcessingOptions& options, const std::function<bool()>& stopRequested = {});
 
   // Why `frame` cannot be processed (another size or pixel format than the camera's, or codes
   // above the format's largest), or nullopt when it can. process() requires nullopt.
-  [[nodiscard]] std::optional<std::string> frameProblem(const calib::RawFrame& frame) const;
+  [[nodiscard]] std::optional<std::string> frameProblem(const RawFrame& frame) const;
 
   // Runs every stage on `frame`. The result, and the map it points to, stay valid until the next
   // call; `captured` must outlive the use of the result (it is borrowed).
@@ -85,18 +75,19 @@ class Pipeline {
   // history is gone, so the next frames publish unfiltered lights until it fills); clustering
   // follows its new parameters; another map size rebuilds the polar remap. Fails, changing
   // nothing, with processingOptionsProblem's sentence.
-  [[nodiscard]] std::expected<void, std::string> reconfigure(const ProcessingOptions& options);
+  [[nodiscard]] std::expected<void, std::string> reconfigure(
+      const ProcessingOptions& options) override;
 
   [[nodiscard]] const calib::CameraCalibration& calibration() const { return calibration_; }
-  [[nodiscard]] const ProcessingOptions& options() const { return options_; }
-  [[nodiscard]] double filterDelayFrames() const { return filter_.delayFrames(); }
+  [[nodiscard]] const ProcessingOptions& options() const override { return options_; }
+  [[nodiscard]] double filterDelayFrames() const override { return filter_.delayFrames(); }
   [[nodiscard]] std::uint64_t lutRebuilds() const { return lutRebuilds_; }
 
  private:
   Pipeline(calib::CameraCalibration calibration, const ProcessingOptions& options,
            calib::PolarRemap remap);
 
-  void calibrate(const calib::RawFrame& frame);
+  void calibrate(const RawFrame& frame);
   void sample();
   void filter(std::uint64_t seq);
   void cluster();

@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "frames/frame_source.h"
 #include "recording/recording_reader.h"
-#include "vemd/frame_source.h"
 #include "vemd/pacer.h"
 #include "vemd/source_rate.h"
 

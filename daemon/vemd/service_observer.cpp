@@ -3,7 +3,7 @@
 #include <chrono>
 #include <utility>
 
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::vemd {
 

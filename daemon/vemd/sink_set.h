@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "vemd/processed_frame.h"
-#include "vemd/sink.h"
+#include "frames/processed_frame.h"
+#include "frames/sink.h"
 
 namespace vem::vemd {
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 #include "vemd/vemd_config.h"
 
 namespace vem::vemd {

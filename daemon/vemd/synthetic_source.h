@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "frames/frame_source.h"
 #include "synth/synthetic_camera.h"
 #include "synth/synthetic_scene.h"
-#include "vemd/frame_source.h"
 #include "vemd/pacer.h"
 #include "vemd/source_rate.h"
 
@@ -61,7 +61,7 @@ class SyntheticSource final : public FrameSource {
   Pacer pacer_;
   FrameSchedule schedule_;
   std::vector<std::vector<std::uint16_t>> spareCodes_;
-  std::optional<calib::RawFrame> rendered_;  // the next frame, rendered before it is due
+  std::optional<RawFrame> rendered_;  // the next frame, rendered before it is due
   std::int64_t dueNs_ = 0;
   std::uint64_t seq_ = 0;
 };

@@ -23,12 +23,12 @@ constexpr int kMapHeight = 256;
 
 struct CalibFixture {
   calib::CameraCalibration camera;
-  calib::RawFrame frame;
+  vem::RawFrame frame;
   calib::PolarRemap remap;
   calib::CodeToLuminanceLut lut;
   EnvMap map;
 
-  explicit CalibFixture(calib::PixelFormat format)
+  explicit CalibFixture(vem::PixelFormat format)
       : camera(testing::cameraTruth(kSensorWidth, kSensorHeight, format.channels)) {
     camera.camera.pixelFormat = format;
     camera.photometric->saturationCode = format.maxCode();
@@ -86,10 +86,10 @@ void registerBaseline(const std::shared_ptr<CalibFixture>& f, const std::string&
 }  // namespace
 
 void registerCalibrationBenchmarks() {
-  for (const calib::PixelFormat format : {calib::PixelFormat{1, 16}, calib::PixelFormat{3, 16},
-                                          calib::PixelFormat{1, 12}}) {
+  for (const vem::PixelFormat format :
+       {vem::PixelFormat{1, 16}, vem::PixelFormat{3, 16}, vem::PixelFormat{1, 12}}) {
     auto f = std::make_shared<CalibFixture>(format);
-    const std::string suffix = calib::pixelFormatName(format);
+    const std::string suffix = vem::pixelFormatName(format);
     registerCalib("apply_" + suffix, [f](benchmark::State& s) {
       for (auto _ : s) {
         calib::applyPolarRemap(f->remap, f->frame, f->lut, f->map);
@@ -103,7 +103,7 @@ void registerCalibrationBenchmarks() {
             calib::buildCodeToLuminanceLut(*f->camera.photometric, format, 1000.0, 1.0));
       }
     });
-    if (format == calib::PixelFormat{1, 16}) {
+    if (format == vem::PixelFormat{1, 16}) {
       registerCalib("build_remap", [f](benchmark::State& s) {
         for (auto _ : s) {
           benchmark::DoNotOptimize(calib::buildPolarRemap(*f->camera.lens, f->camera.orientation,

@@ -29,7 +29,7 @@ constexpr int kFramesInFile = 16;
 // read noise (the same frame the calibration benchmarks use).
 struct RecordingFixture {
   recording::RecordingHeader header;
-  calib::RawFrame frame;
+  vem::RawFrame frame;
   fs::path dir;
 
   RecordingFixture() {

@@ -20,6 +20,7 @@
 #include "synth/sky_scene.h"
 #include "synth/synthetic_camera.h"
 #include "vemd/daemon_loop.h"
+#include "vemd/pipeline_setup.h"
 #include "vemd/replay_source.h"
 
 namespace vem::bench {
@@ -82,7 +83,7 @@ struct VemdFixture {
     if (!writer) return;
     const synth::SkyScene scene;
     synth::SyntheticCamera synthetic(camera, {1, {16.0, 0.0, 1}});  // 1 code of 12 bits
-    calib::RawFrame frame;
+    vem::RawFrame frame;
     for (int i = 0; i < kFrames; ++i) {
       synthetic.render(scene.at(i / 30.0), std::uint64_t(i), frame);
       if (!writer->append(std::uint64_t(i), i * 33'333'333LL, frame)) return;
@@ -97,8 +98,8 @@ struct VemdFixture {
   VemdFixture& operator=(const VemdFixture&) = delete;
 };
 
-vemd::ProcessingOptions benchmarkProcessing() {
-  vemd::ProcessingOptions o;  // the defaults are the issue's: 1024 x 256, 1024 lights
+vem::ProcessingOptions benchmarkProcessing() {
+  vem::ProcessingOptions o;  // the defaults are the issue's: 1024 x 256, 1024 lights
   o.filter = FilterPreset::Paper9;
   o.clustering = true;
   o.clusterBudget = 72;
@@ -106,11 +107,11 @@ vemd::ProcessingOptions benchmarkProcessing() {
 }
 
 // A replay source that also times its reads (capture thread).
-class TimedReplay final : public vemd::FrameSource {
+class TimedReplay final : public vem::FrameSource {
  public:
   explicit TimedReplay(std::unique_ptr<vemd::ReplaySource> inner) : inner_(std::move(inner)) {}
-  vemd::SourceDescription describe() const override { return inner_->describe(); }
-  std::expected<vemd::CapturedFrame, vemd::SourceError> next() override {
+  vem::SourceDescription describe() const override { return inner_->describe(); }
+  std::expected<vem::CapturedFrame, vem::SourceError> next() override {
     const auto start = std::chrono::steady_clock::now();
     auto frame = inner_->next();
     if (frame) {
@@ -121,7 +122,7 @@ class TimedReplay final : public vemd::FrameSource {
     }
     return frame;
   }
-  void recycle(vemd::CapturedFrame&& spent) override { inner_->recycle(std::move(spent)); }
+  void recycle(vem::CapturedFrame&& spent) override { inner_->recycle(std::move(spent)); }
   void interrupt() override { inner_->interrupt(); }
   [[nodiscard]] double meanReadMicros() const { return reads_ > 0 ? readMicros_ / reads_ : 0.0; }
 
@@ -145,7 +146,7 @@ void replayMax(const std::shared_ptr<VemdFixture>& f, benchmark::State& state) {
     // A fresh pipeline per pass: the replay starts again at seq 0, which the temporal filter of
     // the last pass would reject as stale (and skip filtering and clustering).
     auto pipeline =
-        vemd::Pipeline::create(f->calibrationToml, "benchmark camera", benchmarkProcessing());
+        vemd::pipelineFromCameraFile(f->calibrationToml, "benchmark camera", benchmarkProcessing());
     if (!pipeline) return state.SkipWithError(pipeline.error().c_str());
     auto replay =
         vemd::ReplaySource::open(f->recording, {{vemd::SourceRate::Mode::Max, 0.0}, true});
@@ -184,18 +185,18 @@ void replayMax(const std::shared_ptr<VemdFixture>& f, benchmark::State& state) {
 void pipelineOnly(const std::shared_ptr<VemdFixture>& f, benchmark::State& state) {
   auto replay = vemd::ReplaySource::open(f->recording, {{vemd::SourceRate::Mode::Max, 0.0}, false});
   if (!replay) return state.SkipWithError(replay.error().message.c_str());
-  std::vector<vemd::CapturedFrame> frames;
+  std::vector<vem::CapturedFrame> frames;
   while (auto frame = (*replay)->next()) frames.push_back(std::move(*frame));
   auto pipeline =
-      vemd::Pipeline::create(f->calibrationToml, "benchmark camera", benchmarkProcessing());
+      vemd::pipelineFromCameraFile(f->calibrationToml, "benchmark camera", benchmarkProcessing());
   if (!pipeline || frames.empty()) return state.SkipWithError("no pipeline or no frames");
   std::map<std::string, double> sums;
   std::uint64_t seq = 0;
   for (auto _ : state) {
-    vemd::CapturedFrame& frame = frames[seq % frames.size()];
+    vem::CapturedFrame& frame = frames[seq % frames.size()];
     frame.seq = seq++;
-    const vemd::ProcessedFrame& p = pipeline->process(frame);
-    for (const vemd::StageTiming& t : p.timings) sums[t.stage] += t.micros;
+    const vem::ProcessedFrame& p = pipeline->process(frame);
+    for (const vem::StageTiming& t : p.timings) sums[t.stage] += t.micros;
     benchmark::DoNotOptimize(p.lights.lights.data());
   }
   auto& last = counters();

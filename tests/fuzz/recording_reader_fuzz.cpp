@@ -35,8 +35,8 @@ ReadLimits fuzzLimits() {
 }
 
 // A valid recording: header, `frames` frames (lights on odd ones), and the trailer if `close`.
-std::vector<std::byte> seedRecording(int width, int height, vem::calib::PixelFormat format,
-                                     int frames, bool close) {
+std::vector<std::byte> seedRecording(int width, int height, vem::PixelFormat format, int frames,
+                                     bool close) {
   RecordingHeader header;
   header.cameraModel = "fuzz";
   header.cameraSerial = "0";
@@ -50,7 +50,7 @@ std::vector<std::byte> seedRecording(int width, int height, vem::calib::PixelFor
   FrameCodec codec;
   std::vector<std::byte> record;
   for (int i = 0; i < frames; ++i) {
-    vem::calib::RawFrame frame = vem::calib::RawFrame::blank(width, height, format);
+    vem::RawFrame frame = vem::RawFrame::blank(width, height, format);
     for (std::size_t k = 0; k < frame.codes.size(); ++k) {
       frame.codes[k] = std::uint16_t((k * 37 + std::size_t(i) * 11) & format.maxCode());
     }

@@ -90,7 +90,7 @@ TEST_F(Errors, WriterRefusesFramesThatDoNotFitTheHeaderAndNonIncreasingSeq) {
   const recording::RecordingHeader header = smallHeader();
   auto writer = recording::RecordingWriter::create(dir_ / "a.vem", header);
   ASSERT_TRUE(writer);
-  calib::RawFrame wrong = calib::RawFrame::blank(32, 48, header.pixelFormat);
+  vem::RawFrame wrong = vem::RawFrame::blank(32, 48, header.pixelFormat);
   auto bad = writer->append(0, 0, wrong);
   ASSERT_FALSE(bad);
   EXPECT_EQ(bad.error().cause, RecordingError::InvalidFrame);

@@ -51,8 +51,8 @@ inline recording::RecordingHeader smallHeader(int channels = 1, int bits = 12) {
 
 // A smooth gradient with a bright blob that moves with `index`, plus pseudo-random noise: codes
 // in [0, maxCode], different in every frame.
-inline calib::RawFrame smallFrame(const recording::RecordingHeader& h, int index) {
-  calib::RawFrame f = calib::RawFrame::blank(h.sensorWidthPx, h.sensorHeightPx, h.pixelFormat);
+inline vem::RawFrame smallFrame(const recording::RecordingHeader& h, int index) {
+  vem::RawFrame f = vem::RawFrame::blank(h.sensorWidthPx, h.sensorHeightPx, h.pixelFormat);
   f.exposureUs = 1000.0 + 0.1 * index;
   f.gain = 1.0 + 1.0 / 3.0 * index;  // not a short decimal: tests the bits
   std::uint32_t state = 2463534242u + std::uint32_t(index) * 7919u;

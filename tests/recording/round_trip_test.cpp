@@ -23,7 +23,7 @@ TEST_F(RoundTrip, FramesMetadataAndLightsComeBackBitIdentical) {
     ASSERT_EQ(back.frames.size(), 6U);
     for (int i = 0; i < 6; ++i) {
       const recording::RecordedFrame& got = back.frames[std::size_t(i)];
-      const calib::RawFrame want = smallFrame(header, i);
+      const vem::RawFrame want = smallFrame(header, i);
       EXPECT_EQ(got.seq, std::uint64_t(i));
       EXPECT_EQ(got.captureTsNs, i * kPeriodNs);
       EXPECT_EQ(got.frame.width, want.width);
@@ -72,7 +72,7 @@ TEST_F(RoundTrip, CompressionIsLosslessForFullRangeNoise) {
   recording::RecordingHeader header = smallHeader(1, 16);
   header.sensorWidthPx = 256;
   header.sensorHeightPx = 256;
-  calib::RawFrame frame = calib::RawFrame::blank(256, 256, header.pixelFormat);
+  vem::RawFrame frame = vem::RawFrame::blank(256, 256, header.pixelFormat);
   std::uint32_t state = 12345;
   for (std::size_t i = 0; i < frame.codes.size(); ++i) {
     state = state * 1664525u + 1013904223u;

@@ -5,8 +5,8 @@
 
 #include "core/light_clustering.h"
 #include "sinks/sink_test_frames.h"
-#include "tools/vemtool/light_json.h"
 #include "vemd/sinks/jsonl_light_sink.h"
+#include "vemd/sinks/light_json.h"
 
 namespace vem::testing {
 namespace {
@@ -59,7 +59,7 @@ TEST_F(JsonlLightSinkTest, LineKeepsVemtoolsKeysInVemtoolsOrder) {
   for (const auto& [key, value] : line.items()) keys.push_back(key);
   EXPECT_EQ(keys, (std::vector<std::string>{"frame", "seq", "capture_ts_ns", "filtered", "count",
                                             "lights"}));
-  const nlohmann::ordered_json vemtool = tool::frameJson(frame.processed.lights, 7);
+  const nlohmann::ordered_json vemtool = vemd::frameJson(frame.processed.lights, 7);
   EXPECT_EQ(line["lights"], vemtool["lights"]);
 }
 
@@ -92,7 +92,7 @@ TEST_F(JsonlLightSinkTest, ClusteredLineIsWhatVemtoolLightsClusterWrites) {
   ASSERT_LT(frame.processed.clustering->clusters.lights.size(), 40U);
   const nlohmann::ordered_json line = vemd::lightsLineJson(frame.processed, 3);
   const nlohmann::ordered_json vemtool =
-      tool::clusteredFrameJson(frame.processed.lights, 6, MapLayout::Hemisphere, 3);
+      vemd::clusteredFrameJson(frame.processed.lights, 6, MapLayout::Hemisphere, 3);
   EXPECT_EQ(line["lights"], vemtool["lights"]);
   EXPECT_EQ(line["count"], vemtool["count"]);
   EXPECT_EQ(line["clustered_from"], 40);

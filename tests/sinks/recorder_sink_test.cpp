@@ -78,7 +78,7 @@ TEST_F(RecorderSinkTest, FrameThatDoesNotFitTheHeaderStopsTheRecordingOnceAndKee
     ASSERT_TRUE(sink->consume(frame.processed));
   }
   TestFrame resized(3);
-  resized.captured.frame = calib::RawFrame::blank(32, 48, smallHeader().pixelFormat);
+  resized.captured.frame = vem::RawFrame::blank(32, 48, smallHeader().pixelFormat);
   auto failed = sink->consume(resized.processed);
   ASSERT_FALSE(failed);
   EXPECT_EQ(failed.error().message,

@@ -17,8 +17,8 @@
 
 #include "core/env_map.h"
 #include "core/light.h"
+#include "frames/processed_frame.h"
 #include "recording/recording_fixtures.h"
-#include "vemd/processed_frame.h"
 #include "vemd/sinks/recording_context.h"
 
 namespace vem::testing {
@@ -74,9 +74,9 @@ struct TestFrame {
   TestFrame(const TestFrame&) = delete;
   TestFrame& operator=(const TestFrame&) = delete;
 
-  vemd::CapturedFrame captured;
+  vem::CapturedFrame captured;
   EnvMap polar;
-  vemd::ProcessedFrame processed;
+  vem::ProcessedFrame processed;
 };
 
 inline std::vector<std::string> readLines(const fs::path& path) {

@@ -18,7 +18,9 @@
 #include "stream/stream_server.h"
 #include "stream/stream_sink.h"
 #include "vemd/daemon_setup.h"
+#include "vemd/pipeline_setup.h"
 #include "vemd/sinks/jsonl_light_sink.h"
+#include "vemd/stream_wiring.h"
 #include "vemd/vemd_fixtures.h"
 #include "ws_test_client.h"
 
@@ -42,8 +44,8 @@ class StreamProcessing : public ::testing::Test {
     auto started = StreamServer::start(options);
     ASSERT_TRUE(started.has_value()) << started.error();
     server_ = std::move(*started);
-    auto pipeline = vemd::Pipeline::create(vem::testing::smallCameraToml(), "test camera",
-                                           vem::testing::smallProcessing());
+    auto pipeline = vemd::pipelineFromCameraFile(vem::testing::smallCameraToml(), "test camera",
+                                                 vem::testing::smallProcessing());
     ASSERT_TRUE(pipeline.has_value()) << pipeline.error();
     pipeline_.emplace(std::move(*pipeline));
     sink_ = std::make_unique<StreamSink>(*server_, StreamSinkOptions{3, 32});
@@ -54,8 +56,8 @@ class StreamProcessing : public ::testing::Test {
     captured_.frame = vem::testing::cachedSkyFrame(int(seq));
     captured_.seq = seq;
     captured_.captureTsNs = std::int64_t(seq) * vem::testing::kFramePeriodNs;
-    captured_.arrivalNs = vemd::monotonicNowNs();
-    const vemd::ProcessedFrame& processed = pipeline_->process(captured_);
+    captured_.arrivalNs = vem::monotonicNowNs();
+    const vem::ProcessedFrame& processed = pipeline_->process(captured_);
     ASSERT_TRUE(sink_->consume(processed).has_value());
   }
 
@@ -72,7 +74,7 @@ class StreamProcessing : public ::testing::Test {
   std::unique_ptr<StreamServer> server_;
   std::optional<vemd::Pipeline> pipeline_;
   std::unique_ptr<StreamSink> sink_;
-  vemd::CapturedFrame captured_;
+  vem::CapturedFrame captured_;
 };
 
 TEST_F(StreamProcessing, LightFramesCarryThePublishedLights) {
@@ -200,10 +202,10 @@ TEST_F(StreamProcessing, TheCubemapWorkerBuildsTheNewestMapWhenItFallsBehind) {
   }
 }
 
-vemd::LoopCounters someCounters() {
-  vemd::LoopCounters counters;
+vem::LoopCounters someCounters() {
+  vem::LoopCounters counters;
   counters.processed = 10;
-  counters.lastProcessedNs = vemd::monotonicNowNs();
+  counters.lastProcessedNs = vem::monotonicNowNs();
   return counters;
 }
 
@@ -273,7 +275,7 @@ TEST_F(StreamProcessing, ClusterBudgetSetByControlChangesTheRadiusInTheJsonLines
     ASSERT_TRUE(controlRoundTrip(*server_, control, *pipeline_, client, cluster).ok());
     captured_.frame = vem::testing::cachedSkyFrame(int(budget));
     captured_.seq = budget;
-    const vemd::ProcessedFrame& processed = pipeline_->process(captured_);
+    const vem::ProcessedFrame& processed = pipeline_->process(captured_);
     ASSERT_TRUE(processed.clustering.has_value());
     const double expected = clusterRadiusRad(
         {int(budget), pipeline_->options().clusterCorrectionFactor, MapLayout::Hemisphere});
@@ -306,7 +308,7 @@ TEST_F(StreamProcessing, StatusIsPublishedFromTheHook) {
 
 // The state each Status carries, for counters the loop could pass.
 SourceState publishedState(StreamServer& server, StreamSink& sink, vemd::Pipeline& pipeline,
-                           const vemd::LoopCounters& counters) {
+                           const vem::LoopCounters& counters) {
   StreamControl control(server, sink, nullptr, {"aravis:cam", "cam #1"});
   WsTestClient client;
   if (client.connect(server.boundPort()) != 0) return SOURCE_STATE_UNSPECIFIED;
@@ -318,27 +320,27 @@ SourceState publishedState(StreamServer& server, StreamSink& sink, vemd::Pipelin
 }
 
 TEST_F(StreamProcessing, StatusTellsClientsTheCameraIsGoneOrTheReplayEnded) {
-  vemd::LoopCounters counters = someCounters();
+  vem::LoopCounters counters = someCounters();
   EXPECT_EQ(publishedState(*server_, *sink_, *pipeline_, counters), SOURCE_STATE_OK);
-  counters.sourceFailure = vemd::SourceErrorCause::NoDevice;
+  counters.sourceFailure = vem::SourceErrorCause::NoDevice;
   EXPECT_EQ(publishedState(*server_, *sink_, *pipeline_, counters), SOURCE_STATE_NO_DEVICE);
-  counters.sourceFailure = vemd::SourceErrorCause::Timeout;
+  counters.sourceFailure = vem::SourceErrorCause::Timeout;
   EXPECT_EQ(publishedState(*server_, *sink_, *pipeline_, counters), SOURCE_STATE_TIMEOUT);
-  counters.sourceFailure = vemd::SourceErrorCause::BadFrame;
+  counters.sourceFailure = vem::SourceErrorCause::BadFrame;
   EXPECT_EQ(publishedState(*server_, *sink_, *pipeline_, counters), SOURCE_STATE_NO_SIGNAL);
-  counters.sourceFailure = vemd::SourceErrorCause::EndOfStream;
+  counters.sourceFailure = vem::SourceErrorCause::EndOfStream;
   EXPECT_EQ(publishedState(*server_, *sink_, *pipeline_, counters), SOURCE_STATE_ENDED);
   counters.sourceFailure.reset();
-  counters.lastProcessedNs = vemd::monotonicNowNs() - 3'000'000'000;  // a source that blocks
+  counters.lastProcessedNs = vem::monotonicNowNs() - 3'000'000'000;  // a source that blocks
   EXPECT_EQ(publishedState(*server_, *sink_, *pipeline_, counters), SOURCE_STATE_TIMEOUT);
 }
 
 // A pipeline of the small test camera that has processed sky frames 0 to 11 (its filter is full).
 std::optional<vemd::Pipeline> pipelineAfterTwelveFrames() {
-  auto pipeline = vemd::Pipeline::create(vem::testing::smallCameraToml(), "test camera",
-                                         vem::testing::smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile(vem::testing::smallCameraToml(), "test camera",
+                                               vem::testing::smallProcessing());
   if (!pipeline) return std::nullopt;
-  vemd::CapturedFrame captured;
+  vem::CapturedFrame captured;
   for (int i = 0; i < 12; ++i) {
     captured.frame = vem::testing::cachedSkyFrame(i);
     captured.seq = std::uint64_t(i);
@@ -350,13 +352,13 @@ std::optional<vemd::Pipeline> pipelineAfterTwelveFrames() {
 TEST(PipelineReconfigure, ChangingTheLightCountKeepsTheFilterRunning) {
   auto pipeline = pipelineAfterTwelveFrames();
   ASSERT_TRUE(pipeline.has_value());
-  vemd::CapturedFrame captured;
-  vemd::ProcessingOptions options = pipeline->options();
+  vem::CapturedFrame captured;
+  vem::ProcessingOptions options = pipeline->options();
   options.lightCount = 16;
   ASSERT_TRUE(pipeline->reconfigure(options).has_value());
   captured.frame = vem::testing::cachedSkyFrame(12);
   captured.seq = 12;
-  const vemd::ProcessedFrame& next = pipeline->process(captured);
+  const vem::ProcessedFrame& next = pipeline->process(captured);
   EXPECT_EQ(next.lights.lights.size(), 16u);
   EXPECT_TRUE(next.filtered.has_value());  // the filter kept its history
 }
@@ -364,8 +366,8 @@ TEST(PipelineReconfigure, ChangingTheLightCountKeepsTheFilterRunning) {
 TEST(PipelineReconfigure, ChangingTheFilterStartsItAfresh) {
   auto pipeline = pipelineAfterTwelveFrames();
   ASSERT_TRUE(pipeline.has_value());
-  vemd::CapturedFrame captured;
-  vemd::ProcessingOptions options = pipeline->options();
+  vem::CapturedFrame captured;
+  vem::ProcessingOptions options = pipeline->options();
   options.filter = FilterPreset::Equiripple5;
   ASSERT_TRUE(pipeline->reconfigure(options).has_value());
   captured.frame = vem::testing::cachedSkyFrame(12);
@@ -373,7 +375,8 @@ TEST(PipelineReconfigure, ChangingTheFilterStartsItAfresh) {
   const LightSet switched = *pipeline->process(captured).filtered;
   // A pipeline built with the new filter that sees frame 12 first gives the same lights: the
   // history of the old filter is gone.
-  auto fresh = vemd::Pipeline::create(vem::testing::smallCameraToml(), "test camera", options);
+  auto fresh =
+      vemd::pipelineFromCameraFile(vem::testing::smallCameraToml(), "test camera", options);
   ASSERT_TRUE(fresh.has_value());
   const LightSet expected = *fresh->process(captured).filtered;
   ASSERT_EQ(switched.lights.size(), expected.lights.size());
@@ -384,10 +387,10 @@ TEST(PipelineReconfigure, ChangingTheFilterStartsItAfresh) {
 }
 
 TEST(PipelineReconfigure, OutOfRangeOptionsChangeNothing) {
-  auto pipeline = vemd::Pipeline::create(vem::testing::smallCameraToml(), "test camera",
-                                         vem::testing::smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile(vem::testing::smallCameraToml(), "test camera",
+                                               vem::testing::smallProcessing());
   ASSERT_TRUE(pipeline.has_value());
-  vemd::ProcessingOptions options = pipeline->options();
+  vem::ProcessingOptions options = pipeline->options();
   options.lightCount = 0;
   auto done = pipeline->reconfigure(options);
   ASSERT_FALSE(done.has_value());
@@ -399,22 +402,22 @@ TEST(RecordingSwitch, StartsStopsAndRefusesASecondStart) {
   const fs::path dir = fs::temp_directory_path() /
                        ("vem-stream-switch-" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  vemd::SourceDescription source;
+  vem::SourceDescription source;
   source.cameraModel = "test";
   source.sensorWidthPx = vem::testing::kSensorWidth;
   source.sensorHeightPx = vem::testing::kSensorHeight;
   source.pixelFormat = vem::testing::smallCamera().camera.pixelFormat;
   source.calibrationToml = vem::testing::smallCameraToml();
-  RecordingSwitch recorder(dir, vemd::recordingContext(source));
+  RecordingSwitch recorder(dir, vemd::recorderOpener(vemd::recordingContext(source), {}));
   EXPECT_FALSE(recorder.stop().has_value());
   auto started = recorder.start("take1");
   ASSERT_TRUE(started.has_value()) << started.error();
   EXPECT_EQ(*started, dir / "take1.vem");
   EXPECT_FALSE(recorder.start("take2").has_value());
-  auto pipeline = vemd::Pipeline::create(vem::testing::smallCameraToml(), "test camera",
-                                         vem::testing::smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile(vem::testing::smallCameraToml(), "test camera",
+                                               vem::testing::smallProcessing());
   ASSERT_TRUE(pipeline.has_value());
-  vemd::CapturedFrame captured;
+  vem::CapturedFrame captured;
   for (int i = 0; i < 3; ++i) {
     captured.frame = vem::testing::cachedSkyFrame(i);
     captured.seq = std::uint64_t(i);

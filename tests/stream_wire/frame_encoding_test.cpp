@@ -32,8 +32,8 @@ LightSet makeSet(std::uint32_t count, float scale) {
 }
 
 struct Fixture {
-  vemd::CapturedFrame captured;
-  vemd::ProcessedFrame frame;
+  vem::CapturedFrame captured;
+  vem::ProcessedFrame frame;
   Fixture() {
     captured.seq = 100;
     captured.captureTsNs = 123456789;

@@ -17,7 +17,7 @@ namespace vem::synth {
 namespace {
 
 // The example camera's green code toward `dir`.
-int greenCodeToward(const calib::RawFrame& frame, const glm::dvec3& dir) {
+int greenCodeToward(const vem::RawFrame& frame, const glm::dvec3& dir) {
   const calib::CameraCalibration& camera = testing::exampleCamera();
   const glm::dmat3 cameraFromWorld = glm::transpose(calib::worldFromCamera(camera.orientation));
   const glm::dvec2 p = *camera.lens->sensorFromCamera(cameraFromWorld * dir);

@@ -41,8 +41,8 @@ TEST(ExposureJumpScene, LinearCameraCodesAboveBlackDropToAQuarter) {
   const calib::CameraCalibration camera = linearCamera();
   SyntheticCamera synthetic(camera);
   const ExposureJumpScene scene;
-  const calib::RawFrame before = synthetic.render(scene.at(0.9));
-  const calib::RawFrame after = synthetic.render(scene.at(1.1));
+  const vem::RawFrame before = synthetic.render(scene.at(0.9));
+  const vem::RawFrame after = synthetic.render(scene.at(1.1));
   EXPECT_EQ(before.exposureUs, 1000.0);
   EXPECT_EQ(after.exposureUs, 250.0);
   std::vector<double> ratios;
@@ -67,8 +67,8 @@ TEST(ExposureJumpScene, LightsStaySteadyAcrossTheJumpWhenCalibratedAtEachExposur
   const calib::CameraCalibration camera = linearCamera();
   SyntheticCamera synthetic(camera);
   const ExposureJumpScene scene;
-  const calib::RawFrame before = synthetic.render(scene.at(0.9));
-  const calib::RawFrame after = synthetic.render(scene.at(1.1));
+  const vem::RawFrame before = synthetic.render(scene.at(0.9));
+  const vem::RawFrame after = synthetic.render(scene.at(1.1));
   const LightSet lightsBefore =
       testing::hemisphereLights(testing::calibratedMap(camera, before), 256);
   const LightSet lightsAfter =
@@ -81,7 +81,7 @@ TEST(ExposureJumpScene, LightsStaySteadyAcrossTheJumpWhenCalibratedAtEachExposur
   EXPECT_NEAR(luminance(strongestAfter.rgb) / luminance(strongestBefore.rgb), 1.0, 0.02);
 
   // Calibrating the later frame as if it had the earlier exposure would see a 4x darker world.
-  calib::RawFrame mislabelled = after;
+  vem::RawFrame mislabelled = after;
   mislabelled.exposureUs = before.exposureUs;
   const LightSet wrong =
       testing::hemisphereLights(testing::calibratedMap(camera, mislabelled), 256);

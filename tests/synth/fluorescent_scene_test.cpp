@@ -37,7 +37,7 @@ const std::vector<LightSet>& capturedLights() {
     const FluorescentScene scene;
     std::vector<LightSet> sets;
     for (int k = 0; k < kFrames; ++k) {
-      const calib::RawFrame frame =
+      const vem::RawFrame frame =
           testing::exampleSyntheticCamera().render(scene.at(k / kRateHz), std::uint64_t(k));
       sets.push_back(
           testing::hemisphereLights(testing::calibratedMap(testing::exampleCamera(), frame), 64));

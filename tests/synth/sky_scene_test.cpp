@@ -89,7 +89,7 @@ TEST(SkyScene, SunDiscIsHalfADegreeAcross) {
 
 TEST(SkyScene, SunStaysBelowTheExampleCamerasSaturationAndTheSkyAboveItsBlack) {
   const SceneState state = SkyScene().at(60.0);
-  const calib::RawFrame frame = testing::exampleSyntheticCamera().render(state);
+  const vem::RawFrame frame = testing::exampleSyntheticCamera().render(state);
   const calib::CameraCalibration& camera = testing::exampleCamera();
   const glm::dmat3 cameraFromWorld = glm::transpose(calib::worldFromCamera(camera.orientation));
   const auto codeToward = [&](const glm::dvec3& dir, int channel) {

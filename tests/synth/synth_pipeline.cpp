@@ -34,7 +34,7 @@ synth::SyntheticCamera& exampleSyntheticCamera() {
   return camera;
 }
 
-EnvMap calibratedMap(const calib::CameraCalibration& calibration, const calib::RawFrame& frame) {
+EnvMap calibratedMap(const calib::CameraCalibration& calibration, const vem::RawFrame& frame) {
   const calib::PolarRemap remap =
       calib::buildPolarRemap(*calibration.lens, calibration.orientation, frame.width, frame.height,
                              MapLayout::Hemisphere, kPolarWidth, kPolarHeight);

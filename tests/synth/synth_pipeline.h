@@ -8,9 +8,9 @@
 #include <glm/vec3.hpp>
 
 #include "calib/core/camera_calibration.h"
-#include "calib/core/raw_frame.h"
 #include "core/env_map.h"
 #include "core/light.h"
+#include "frames/raw_frame.h"
 #include "synth/synthetic_camera.h"
 
 namespace vem::testing {
@@ -26,7 +26,7 @@ inline constexpr int kPolarHeight = 256;
 // `frame` into the 1024 x 256 hemisphere map with `calibration` (remap + LUT at the frame's own
 // exposure and gain).
 [[nodiscard]] EnvMap calibratedMap(const calib::CameraCalibration& calibration,
-                                   const calib::RawFrame& frame);
+                                   const vem::RawFrame& frame);
 
 // N lights by the Havran sampler with the default pattern (hemisphere).
 [[nodiscard]] LightSet hemisphereLights(const EnvMap& map, std::size_t count);

@@ -29,7 +29,7 @@ calib::CameraCalibration linearCamera(int width, int height, int channels) {
 }
 
 // The largest code difference between two frames of the same size.
-int largestDifference(const calib::RawFrame& a, const calib::RawFrame& b) {
+int largestDifference(const vem::RawFrame& a, const vem::RawFrame& b) {
   EXPECT_EQ(a.codes.size(), b.codes.size());
   int largest = 0;
   for (std::size_t i = 0; i < a.codes.size(); ++i) {
@@ -41,12 +41,12 @@ int largestDifference(const calib::RawFrame& a, const calib::RawFrame& b) {
 void expectLikeSimulateFrame(const calib::CameraCalibration& camera, const SceneState& state,
                              int samples) {
   SyntheticCamera synthetic(camera, {samples, {}});
-  const calib::RawFrame fast = synthetic.render(state);
+  const vem::RawFrame fast = synthetic.render(state);
   calib::SimulationOptions options;
   options.exposureUs = state.exposureUs;
   options.gain = state.gain;
   options.supersamples = samples;
-  const calib::RawFrame reference = calib::simulateFrame(state.radiance, camera, options);
+  const vem::RawFrame reference = calib::simulateFrame(state.radiance, camera, options);
   EXPECT_EQ(fast.width, reference.width);
   EXPECT_EQ(fast.format, reference.format);
   EXPECT_EQ(fast.exposureUs, reference.exposureUs);
@@ -100,7 +100,7 @@ TEST(SyntheticCamera, PixelsOutsideTheLensCircleReadTheBlackLevel) {
   SyntheticCamera camera(testing::cameraTruth(160, 128, 3));
   SceneState state;
   state.radiance = [](const glm::dvec3&) { return glm::dvec3(100.0); };
-  const calib::RawFrame frame = camera.render(state);
+  const vem::RawFrame frame = camera.render(state);
   EXPECT_EQ(frame.at(0, 0, 0), 64);  // a corner: outside the circle
   EXPECT_EQ(frame.at(159, 127, 2), 64);
   EXPECT_GT(frame.at(80, 64, 1), 2000);  // the centre sees 100 cd/m2
@@ -126,7 +126,7 @@ TEST(SyntheticCamera, ReadNoiseHasTheRequestedStandardDeviation) {
   SyntheticCamera noisy(truth, {1, {3.0, 0.0, 5}});
   SceneState state;
   state.radiance = [](const glm::dvec3&) { return glm::dvec3(5.0); };
-  const calib::RawFrame a = noisy.render(state, 1);
+  const vem::RawFrame a = noisy.render(state, 1);
   const double ideal = calib::codeFromLuminance(*truth.photometric, 0, 5.0, 1000.0, 1.0);
   double sum = 0.0;
   double sumSquares = 0.0;
@@ -148,7 +148,7 @@ TEST(SyntheticCamera, SaturatedPixelsReadTheSaturationCodeWithoutNoise) {
   SyntheticCamera camera(testing::cameraTruth(64, 64, 3), {1, {5.0, 0.0, 1}});
   SceneState state;
   state.radiance = [](const glm::dvec3&) { return glm::dvec3(1e9); };
-  const calib::RawFrame frame = camera.render(state, 3);
+  const vem::RawFrame frame = camera.render(state, 3);
   EXPECT_EQ(frame.at(32, 32, 0), 4095);
   EXPECT_EQ(frame.at(32, 32, 2), 4095);
 }

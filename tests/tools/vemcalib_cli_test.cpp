@@ -97,7 +97,7 @@ class VemcalibCli : public ::testing::Test {
   // The first chart frame with `patchName`'s region set to `code` in every channel.
   [[nodiscard]] std::string frameWithPatchAt(const std::string& patchName,
                                              std::uint16_t code) const {
-    RawFrame frame = *io::loadRawFrame(sim("patches-1.png"), 12);
+    vem::RawFrame frame = *io::loadRawFrame(sim("patches-1.png"), 12);
     const PatchSpec p = patch(patchName);
     for (int v = p.y; v < p.y + p.height; ++v)
       for (int u = p.x; u < p.x + p.width; ++u)
@@ -229,7 +229,7 @@ TEST_F(VemcalibCli, RefusesAPatchRegionBeyondTheFrameNamingThePatch) {
 
 TEST_F(VemcalibCli, RefusesFramesThatDoNotFitTheOutputsCamera) {
   const std::string before = existingOutput();
-  RawFrame small = RawFrame::blank(64, 48, {3, 12});
+  vem::RawFrame small = vem::RawFrame::blank(64, 48, {3, 12});
   ASSERT_TRUE(io::saveRawFrame(small, dir_ / "small.png"));
   std::vector<PatchSpec> tiny{{"a", 0, 0, 4, 4, 1, false}};
   expectRefused(photometric((dir_ / "small.png").string(), patchFile(tiny)), before,
@@ -352,7 +352,7 @@ TEST_F(VemcalibCli, ApplyRefusesACameraWithoutLensAndAFrameOfAnotherSize) {
   EXPECT_EQ(a.exitCode, 1);
   EXPECT_EQ(lineCount(a.err), 1) << a.err;
   EXPECT_TRUE(contains(a.err, "nolens.toml: the camera has no geometric section")) << a.err;
-  ASSERT_TRUE(io::saveRawFrame(RawFrame::blank(64, 48, {3, 12}), dir_ / "small.png"));
+  ASSERT_TRUE(io::saveRawFrame(vem::RawFrame::blank(64, 48, {3, 12}), dir_ / "small.png"));
   const CommandRun b = run("apply --camera " + kExampleCamera.string() + " --frame " +
                            (dir_ / "small.png").string() + " --out " + (dir_ / "m.exr").string());
   EXPECT_EQ(b.exitCode, 1);

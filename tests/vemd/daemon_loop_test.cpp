@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "vemd/pipeline_setup.h"
 #include "vemd/replay_source.h"
 #include "vemd_fixtures.h"
 
@@ -18,11 +19,11 @@ namespace vem::testing {
 namespace {
 
 using namespace std::chrono_literals;
-using vemd::SourceError;
-using vemd::SourceErrorCause;
+using vem::SourceError;
+using vem::SourceErrorCause;
 
 vemd::Pipeline smallPipeline() {
-  auto pipeline = vemd::Pipeline::create(smallCameraToml(), "test camera", smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile(smallCameraToml(), "test camera", smallProcessing());
   EXPECT_TRUE(pipeline);
   return std::move(*pipeline);
 }
@@ -42,7 +43,7 @@ struct SinkUnderTest {
 };
 
 vemd::SinkSet sinksWith(SinkUnderTest& a, const std::string& name = "test") {
-  std::vector<std::unique_ptr<vemd::Sink>> sinks;
+  std::vector<std::unique_ptr<vem::Sink>> sinks;
   auto sink = std::make_unique<TestSink>(name, a.log);
   a.sink = sink.get();
   sinks.push_back(std::move(sink));
@@ -156,7 +157,7 @@ TEST_F(VemdFiles, FrameLimitStopsAfterExactlyNFramesOfALoopingReplay) {
 TEST(DaemonLoop, FailingSinkIsDroppedOnceAndTheOthersKeepGoing) {
   ScriptedSource source(ScriptedSource::frames(10), false);
   SinkUnderTest failing, healthy;
-  std::vector<std::unique_ptr<vemd::Sink>> list;
+  std::vector<std::unique_ptr<vem::Sink>> list;
   auto bad = std::make_unique<TestSink>("bad", failing.log);
   bad->failAtFrame = 3;
   list.push_back(std::move(bad));
@@ -197,9 +198,9 @@ TEST(DaemonLoop, SourceErrorsAreRetriedAndCountedUntilFramesFlowAgain) {
 // The loop tells its control why no frames come (the stream's Status): a lost camera shows as
 // NoDevice while the capture thread retries, and the failure clears once frames flow again.
 TEST(DaemonLoop, ControlSeesTheCameraGoneWhileRetryingAndBackWhenFramesFlow) {
-  class StateLog final : public vemd::LoopControl {
+  class StateLog final : public vem::LoopControl {
    public:
-    void betweenFrames(vemd::Pipeline&, const vemd::LoopCounters& counters) override {
+    void betweenFrames(vem::PipelineControl&, const vem::LoopCounters& counters) override {
       if (seen.empty() || seen.back() != counters.sourceFailure) seen.push_back(counters.sourceFailure);
     }
     std::vector<std::optional<SourceErrorCause>> seen;
@@ -247,22 +248,22 @@ TEST(DaemonLoop, StopRequestEndsAnEndlessSourceAndClosesTheSinks) {
 }
 
 TEST(DaemonLoop, FramesThePipelineCannotTakeAreCountedAsBadAndSkipped) {
-  class WrongSizeSource final : public vemd::FrameSource {
+  class WrongSizeSource final : public vem::FrameSource {
    public:
-    vemd::SourceDescription describe() const override {
-      vemd::SourceDescription d;
+    vem::SourceDescription describe() const override {
+      vem::SourceDescription d;
       d.paced = false;
       return d;
     }
-    std::expected<vemd::CapturedFrame, SourceError> next() override {
+    std::expected<vem::CapturedFrame, SourceError> next() override {
       if (n_ == 6) return std::unexpected(SourceError{SourceErrorCause::EndOfStream, "end"});
       const bool bad = n_ % 2 == 1;
-      vemd::CapturedFrame f =
-          captured(bad ? calib::RawFrame::blank(8, 8, {1, 12}) : cachedSkyFrame(int(n_)), n_);
+      vem::CapturedFrame f =
+          captured(bad ? vem::RawFrame::blank(8, 8, {1, 12}) : cachedSkyFrame(int(n_)), n_);
       ++n_;
       return f;
     }
-    void recycle(vemd::CapturedFrame&&) override {}
+    void recycle(vem::CapturedFrame&&) override {}
     void interrupt() override {}
 
    private:

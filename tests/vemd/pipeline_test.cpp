@@ -1,6 +1,7 @@
 // The per-frame pipeline: determinism (record then replay gives the same lights bit for bit), the
 // code table's rebuilds, the stages it reports, and frames it must refuse.
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 
 #include <cmath>
 
@@ -14,8 +15,8 @@
 namespace vem::testing {
 namespace {
 
-vemd::Pipeline smallPipeline(vemd::ProcessingOptions options = smallProcessing()) {
-  auto pipeline = vemd::Pipeline::create(smallCameraToml(), "test camera", options);
+vemd::Pipeline smallPipeline(vem::ProcessingOptions options = smallProcessing()) {
+  auto pipeline = vemd::pipelineFromCameraFile(smallCameraToml(), "test camera", options);
   EXPECT_TRUE(pipeline) << (pipeline ? "" : pipeline.error());
   return std::move(*pipeline);
 }
@@ -30,17 +31,17 @@ ReplayedLights replayThroughPipeline(const fs::path& path) {
   auto source = vemd::ReplaySource::open(path, {{vemd::SourceRate::Mode::Max, 0.0}, false});
   EXPECT_TRUE(source);
   if (!source) return out;
-  auto pipeline = vemd::Pipeline::create((*source)->describe().calibrationToml, path.string(),
-                                         smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile((*source)->describe().calibrationToml, path.string(),
+                                               smallProcessing());
   EXPECT_TRUE(pipeline);
   if (!pipeline) return out;
   for (;;) {
     auto frame = (*source)->next();
     if (!frame) {
-      EXPECT_EQ(frame.error().cause, vemd::SourceErrorCause::EndOfStream) << frame.error().message;
+      EXPECT_EQ(frame.error().cause, vem::SourceErrorCause::EndOfStream) << frame.error().message;
       break;
     }
-    const vemd::ProcessedFrame& p = pipeline->process(*frame);
+    const vem::ProcessedFrame& p = pipeline->process(*frame);
     out.lights.push_back(p.lights);
     out.filtered.push_back(*p.filtered);
     out.clusterings.push_back(p.clustering);
@@ -87,7 +88,7 @@ TEST(Pipeline, FrameLightsDoNotDependOnEarlierFrames) {
   vemd::Pipeline fresh = smallPipeline();
   vemd::Pipeline used = smallPipeline();
   for (int i = 0; i < 5; ++i) (void)used.process(captured(cachedSkyFrame(i), std::uint64_t(i)));
-  const vemd::CapturedFrame frame = captured(cachedSkyFrame(7), 5);
+  const vem::CapturedFrame frame = captured(cachedSkyFrame(7), 5);
   const LightSet a = fresh.process(frame).lights;
   const LightSet b = used.process(frame).lights;
   EXPECT_TRUE(sameLights(a, b));
@@ -95,7 +96,7 @@ TEST(Pipeline, FrameLightsDoNotDependOnEarlierFrames) {
 
 TEST(Pipeline, CodeTableIsRebuiltOnlyWhenExposureOrGainChange) {
   vemd::Pipeline pipeline = smallPipeline();
-  calib::RawFrame frame = cachedSkyFrame(0);
+  vem::RawFrame frame = cachedSkyFrame(0);
   (void)pipeline.process(captured(frame, 0));
   (void)pipeline.process(captured(frame, 1));
   EXPECT_EQ(pipeline.lutRebuilds(), 1u);
@@ -117,11 +118,12 @@ TEST(Pipeline, HalvingTheExposureDoublesTheMapOfALinearCamera) {
   linear.saturationCode = 4095.0;
   linear.response = calib::LinearResponse{{0.01, 0.01, 0.01}};
   camera.photometric = linear;
-  vemd::ProcessingOptions options = smallProcessing();
+  vem::ProcessingOptions options = smallProcessing();
   options.filter = FilterPreset::None;
-  auto pipeline = vemd::Pipeline::create(calib::io::formatCameraFile(camera), "linear", options);
+  auto pipeline =
+      vemd::pipelineFromCameraFile(calib::io::formatCameraFile(camera), "linear", options);
   ASSERT_TRUE(pipeline) << pipeline.error();
-  calib::RawFrame frame = calib::RawFrame::blank(kSensorWidth, kSensorHeight, {1, 12});
+  vem::RawFrame frame = vem::RawFrame::blank(kSensorWidth, kSensorHeight, {1, 12});
   std::fill(frame.codes.begin(), frame.codes.end(), std::uint16_t(1000));
   const double before = pipeline->process(captured(frame, 0)).lights.luminanceSr;
   frame.exposureUs /= 2.0;
@@ -131,7 +133,7 @@ TEST(Pipeline, HalvingTheExposureDoublesTheMapOfALinearCamera) {
 
 TEST(Pipeline, TimingsNameEveryStageInOrder) {
   vemd::Pipeline pipeline = smallPipeline();
-  const vemd::ProcessedFrame& p = pipeline.process(captured(cachedSkyFrame(0), 0));
+  const vem::ProcessedFrame& p = pipeline.process(captured(cachedSkyFrame(0), 0));
   ASSERT_EQ(p.timings.size(), 5u);
   const char* names[] = {"calibrate", "tables", "lights", "filter", "cluster"};
   for (std::size_t i = 0; i < 5; ++i) {
@@ -144,8 +146,8 @@ TEST(Pipeline, ResultCarriesTheMapLightsFilteredSetAndClustering) {
   vemd::Pipeline pipeline = smallPipeline();
   for (int i = 0; i < 6; ++i) {
     // ProcessedFrame borrows the captured frame: keep it alive while p is read.
-    const vemd::CapturedFrame frame = captured(cachedSkyFrame(i), std::uint64_t(10 + i));
-    const vemd::ProcessedFrame& p = pipeline.process(frame);
+    const vem::CapturedFrame frame = captured(cachedSkyFrame(i), std::uint64_t(10 + i));
+    const vem::ProcessedFrame& p = pipeline.process(frame);
     ASSERT_NE(p.polar, nullptr);
     EXPECT_EQ(p.polar->width, 256);
     EXPECT_EQ(p.polar->height, 64);
@@ -163,7 +165,7 @@ TEST(Pipeline, ResultCarriesTheMapLightsFilteredSetAndClustering) {
 }
 
 TEST(Pipeline, ClusteringOffGivesNoClustering) {
-  vemd::ProcessingOptions options = smallProcessing();
+  vem::ProcessingOptions options = smallProcessing();
   options.clustering = false;
   vemd::Pipeline pipeline = smallPipeline(options);
   EXPECT_FALSE(pipeline.process(captured(cachedSkyFrame(0), 0)).clustering.has_value());
@@ -172,18 +174,18 @@ TEST(Pipeline, ClusteringOffGivesNoClustering) {
 TEST(Pipeline, FrameOfAnotherSizeOrFormatIsReportedBeforeProcessing) {
   vemd::Pipeline pipeline = smallPipeline();
   EXPECT_EQ(pipeline.frameProblem(cachedSkyFrame(0)), std::nullopt);
-  const calib::RawFrame small = calib::RawFrame::blank(64, 48, {1, 12});
+  const vem::RawFrame small = vem::RawFrame::blank(64, 48, {1, 12});
   const auto problem = pipeline.frameProblem(small);
   ASSERT_TRUE(problem);
   EXPECT_EQ(*problem, "the frame is 64 x 48 Mono12 but the camera is 320 x 256 Mono12");
-  const calib::RawFrame rgb = calib::RawFrame::blank(kSensorWidth, kSensorHeight, {3, 12});
+  const vem::RawFrame rgb = vem::RawFrame::blank(kSensorWidth, kSensorHeight, {3, 12});
   EXPECT_TRUE(pipeline.frameProblem(rgb));
 }
 
 // A code above 4095 in a Mono12 frame would read past the end of the code table.
 TEST(Pipeline, CodeAboveTheFormatsLargestIsRefused) {
   vemd::Pipeline pipeline = smallPipeline();
-  calib::RawFrame frame = cachedSkyFrame(0);
+  vem::RawFrame frame = cachedSkyFrame(0);
   frame.codes[1234] = 5000;
   const auto problem = pipeline.frameProblem(frame);
   ASSERT_TRUE(problem);
@@ -193,24 +195,24 @@ TEST(Pipeline, CodeAboveTheFormatsLargestIsRefused) {
 TEST(Pipeline, CalibrationWithoutALensIsRefusedInOneSentence) {
   calib::CameraCalibration camera = smallCamera();
   camera.lens.reset();
-  auto pipeline =
-      vemd::Pipeline::create(calib::io::formatCameraFile(camera), "cam.toml", smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile(calib::io::formatCameraFile(camera), "cam.toml",
+                                               smallProcessing());
   ASSERT_FALSE(pipeline);
   EXPECT_EQ(pipeline.error(),
             "cam.toml: the camera file has no geometric section (run vemcalib fisheye)");
 }
 
 TEST(Pipeline, MissingCalibrationIsRefused) {
-  auto pipeline = vemd::Pipeline::create("", "replay:x.vem", smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile("", "replay:x.vem", smallProcessing());
   ASSERT_FALSE(pipeline);
   EXPECT_NE(pipeline.error().find("replay:x.vem: no calibration comes with the frames"),
             std::string::npos);
 }
 
 TEST(Pipeline, LightCountOutOfRangeIsRefused) {
-  vemd::ProcessingOptions options = smallProcessing();
+  vem::ProcessingOptions options = smallProcessing();
   options.lightCount = 0;
-  auto pipeline = vemd::Pipeline::create(smallCameraToml(), "cam", options);
+  auto pipeline = vemd::pipelineFromCameraFile(smallCameraToml(), "cam", options);
   ASSERT_FALSE(pipeline);
   EXPECT_EQ(pipeline.error(), "the light count must be 1 to 65536, not 0");
 }

@@ -39,7 +39,7 @@ TEST_F(ReplaySourceFiles, FramesComeBackAsRecordedWithTheHeadersDescription) {
   writeSkyRecording(path, 3, false);
   auto source = openReplay(path, kMax, false);
   ASSERT_TRUE(source);
-  const vemd::SourceDescription d = source->describe();
+  const vem::SourceDescription d = source->describe();
   EXPECT_EQ(d.spec, "replay:" + path.string());
   EXPECT_EQ(d.sensorWidthPx, kSensorWidth);
   EXPECT_EQ(d.calibrationToml, smallCameraToml());
@@ -57,7 +57,7 @@ TEST_F(ReplaySourceFiles, FramesComeBackAsRecordedWithTheHeadersDescription) {
   }
   auto end = source->next();
   ASSERT_FALSE(end);
-  EXPECT_EQ(end.error().cause, vemd::SourceErrorCause::EndOfStream);
+  EXPECT_EQ(end.error().cause, vem::SourceErrorCause::EndOfStream);
   EXPECT_EQ(end.error().message, path.string() + ": end of the recording (3 frames)");
 }
 
@@ -107,7 +107,7 @@ TEST_F(ReplaySourceFiles, InterruptEndsAWaitWithTimeoutAndLosesNoFrame) {
   auto interrupted = source->next();  // waits 100 s unless interrupted
   interrupter.join();
   ASSERT_FALSE(interrupted);
-  EXPECT_EQ(interrupted.error().cause, vemd::SourceErrorCause::Timeout);
+  EXPECT_EQ(interrupted.error().cause, vem::SourceErrorCause::Timeout);
 }
 
 // An interrupt that arrives while nobody waits is kept for the next wait: a stop requested just
@@ -121,7 +121,7 @@ TEST_F(ReplaySourceFiles, InterruptBeforeTheWaitIsNotLost) {
   source->interrupt();
   auto frame = source->next();
   ASSERT_FALSE(frame);
-  EXPECT_EQ(frame.error().cause, vemd::SourceErrorCause::Timeout);
+  EXPECT_EQ(frame.error().cause, vem::SourceErrorCause::Timeout);
 }
 
 // Every frame record of `path` damaged (one byte flipped inside each); the index stays intact.
@@ -158,7 +158,7 @@ TEST_F(ReplaySourceFiles, RecordingWithNoIntactFrameIsRefusedAtOpen) {
     for (const bool loop : {false, true}) {
       auto source = vemd::ReplaySource::open(path, {kMax, loop});
       ASSERT_FALSE(source) << path << (loop ? " looping" : "");
-      EXPECT_EQ(source.error().cause, vemd::SourceErrorCause::NoDevice);
+      EXPECT_EQ(source.error().cause, vem::SourceErrorCause::NoDevice);
       EXPECT_EQ(source.error().message, path.string() + ": the recording holds no intact frame (" +
                                             damage +
                                             ", truncated tail: 0 bytes), so there is nothing "

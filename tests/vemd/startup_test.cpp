@@ -11,6 +11,7 @@
 #include "calib/core/polar_remap.h"
 #include "recording/recording_reader.h"
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 #include "vemd_fixtures.h"
 
 namespace vem::testing {
@@ -51,9 +52,9 @@ TEST_F(Startup, StopRequestedWhileOpeningTheSourceEndsStartUpAsStopped) {
 // 55 s after SIGTERM): asked before every row, it stops at the first "true", and the pipeline is
 // not made.
 TEST_F(Startup, StopRequestedWhileBuildingTheRemapAbandonsItAtTheNextRow) {
-  vemd::ProcessingOptions options = smallProcessing();
+  vem::ProcessingOptions options = smallProcessing();
   int asked = 0;
-  auto pipeline = vemd::Pipeline::create(smallCameraToml(), "cam", options, [&] {
+  auto pipeline = vemd::pipelineFromCameraFile(smallCameraToml(), "cam", options, [&] {
     ++asked;
     return asked == 10;
   });
@@ -87,8 +88,8 @@ TEST_F(Startup, StopRequestedAfterTheSinksOpenedClosesTheRecordingWithItsIndex) 
   std::atomic<bool> stop{false};
   auto daemon = vemd::buildDaemon(
       config,
-      [&](const vemd::SourceDescription&,
-          std::vector<std::unique_ptr<vemd::Sink>>&) -> std::expected<void, std::string> {
+      [&](const vem::SourceDescription&,
+          std::vector<std::unique_ptr<vem::Sink>>&) -> std::expected<void, std::string> {
         stop = true;  // as a signal arriving while the stream server starts
         return {};
       },
@@ -104,11 +105,11 @@ TEST_F(Startup, StopRequestedAfterTheSinksOpenedClosesTheRecordingWithItsIndex) 
 // Catches a queue whose frames could take more memory than vemd's budget: 4096 x 3072 RGB16
 // frames are 72 MiB, so 8 queued (20 held) would be 1440 MiB; 5 (14 held, 1008 MiB) fit.
 TEST(FrameMemory, QueueOfLargeFramesBeyondTheBudgetIsRefusedNamingTheDepthThatFits) {
-  vemd::SourceDescription source;
+  vem::SourceDescription source;
   source.spec = "v4l2:/dev/video0";
   source.sensorWidthPx = 4096;
   source.sensorHeightPx = 3072;
-  source.pixelFormat = *calib::parsePixelFormat("RGB16");
+  source.pixelFormat = *vem::parsePixelFormat("RGB16");
   EXPECT_EQ(vemd::frameMemoryProblem(source, 8),
             "v4l2:/dev/video0: its 4096 x 3072 RGB16 frames take 72.0 MiB each, and with "
             "source.queue_depth = 8 vemd may hold 20 of them (1440 MiB), above its 1024 MiB "
@@ -120,11 +121,11 @@ TEST(FrameMemory, QueueOfLargeFramesBeyondTheBudgetIsRefusedNamingTheDepthThatFi
 // Catches a frame so large that not even a queue of one fits: the sentence asks for smaller
 // frames instead of an impossible depth.
 TEST(FrameMemory, FramesTooLargeForAnyQueueAskForASmallerFrameSize) {
-  vemd::SourceDescription source;
+  vem::SourceDescription source;
   source.spec = "replay:huge.vem";
   source.sensorWidthPx = 16384;
   source.sensorHeightPx = 16384;
-  source.pixelFormat = *calib::parsePixelFormat("RGB16");
+  source.pixelFormat = *vem::parsePixelFormat("RGB16");
   const auto problem = vemd::frameMemoryProblem(source, 1);
   ASSERT_TRUE(problem);
   EXPECT_NE(problem->find("use a smaller frame size ([camera] width_px, height_px)"),
@@ -135,10 +136,10 @@ TEST(FrameMemory, FramesTooLargeForAnyQueueAskForASmallerFrameSize) {
 // Catches the pipeline accepting a map beyond the start-up limit when it is built in code (the
 // stream's control path and tests build ProcessingOptions without the configuration file).
 TEST(PipelineLimits, MapBeyondTheStartUpLimitIsRefusedByThePipelineToo) {
-  vemd::ProcessingOptions options = smallProcessing();
+  vem::ProcessingOptions options = smallProcessing();
   options.mapWidth = 16384;
   options.mapHeight = 16384;
-  auto pipeline = vemd::Pipeline::create(smallCameraToml(), "cam", options);
+  auto pipeline = vemd::pipelineFromCameraFile(smallCameraToml(), "cam", options);
   ASSERT_FALSE(pipeline);
   EXPECT_EQ(pipeline.error(),
             "the polar map must be 4 to 4096 pixels wide and 4 to 2048 high (start-up time and "

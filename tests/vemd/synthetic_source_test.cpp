@@ -1,6 +1,7 @@
 // SyntheticSource: a scene through a camera file as a live source: frames of the camera's size,
 // seq from 0, CLOCK_MONOTONIC timestamps, the camera file as calibration, clear refusals.
 #include "vemd/synthetic_source.h"
+#include "vemd/pipeline_setup.h"
 
 #include <gtest/gtest.h>
 
@@ -20,14 +21,14 @@ TEST_F(SyntheticSourceFiles, SkySceneGivesLiveFramesOfTheCamerasSizeAndItsCalibr
   options.cameraFile = camera.string();
   auto source = vemd::SyntheticSource::create("sky", options);
   ASSERT_TRUE(source) << source.error().message;
-  const vemd::SourceDescription d = (*source)->describe();
+  const vem::SourceDescription d = (*source)->describe();
   EXPECT_EQ(d.spec, "synthetic:sky");
   EXPECT_EQ(d.sensorWidthPx, kSensorWidth);
   EXPECT_EQ(d.sensorHeightPx, kSensorHeight);
   EXPECT_TRUE(d.liveClock);
   EXPECT_FALSE(d.paced);
   EXPECT_EQ(d.nominalRateHz, 30.0);
-  auto pipeline = vemd::Pipeline::create(d.calibrationToml, d.spec, smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile(d.calibrationToml, d.spec, smallProcessing());
   ASSERT_TRUE(pipeline) << pipeline.error();
   std::int64_t lastTs = 0;
   for (std::uint64_t i = 0; i < 3; ++i) {
@@ -35,7 +36,7 @@ TEST_F(SyntheticSourceFiles, SkySceneGivesLiveFramesOfTheCamerasSizeAndItsCalibr
     ASSERT_TRUE(frame) << frame.error().message;
     EXPECT_EQ(frame->seq, i);
     EXPECT_GT(frame->captureTsNs, lastTs);
-    EXPECT_LE(frame->captureTsNs, vemd::monotonicNowNs());
+    EXPECT_LE(frame->captureTsNs, vem::monotonicNowNs());
     lastTs = frame->captureTsNs;
     EXPECT_EQ(pipeline->frameProblem(frame->frame), std::nullopt);
     EXPECT_GT(pipeline->process(*frame).lights.luminanceSr, 0.0);
@@ -46,7 +47,7 @@ TEST_F(SyntheticSourceFiles, SkySceneGivesLiveFramesOfTheCamerasSizeAndItsCalibr
 TEST(SyntheticSource, UnknownSceneIsRefusedNamingTheScenes) {
   auto source = vemd::SyntheticSource::create("forest", {});
   ASSERT_FALSE(source);
-  EXPECT_EQ(source.error().cause, vemd::SourceErrorCause::NoDevice);
+  EXPECT_EQ(source.error().cause, vem::SourceErrorCause::NoDevice);
   EXPECT_EQ(source.error().message.rfind("synthetic:forest: ", 0), 0u) << source.error().message;
 }
 
@@ -70,7 +71,7 @@ TEST_F(SyntheticSourceFiles, PacedSourceIsInterruptible) {
   (*source)->interrupt();
   auto frame = (*source)->next();
   ASSERT_FALSE(frame);
-  EXPECT_EQ(frame.error().cause, vemd::SourceErrorCause::Timeout);
+  EXPECT_EQ(frame.error().cause, vem::SourceErrorCause::Timeout);
 }
 
 }  // namespace

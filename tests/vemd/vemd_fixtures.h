@@ -19,12 +19,13 @@
 
 #include "calib/core/camera_simulator.h"
 #include "calib/io/camera_file.h"
+#include "frames/frame_source.h"
+#include "frames/sink.h"
 #include "recording/recording_writer.h"
 #include "support/test_cameras.h"
 #include "support/test_maps.h"
-#include "vemd/frame_source.h"
 #include "vemd/pipeline.h"
-#include "vemd/sink.h"
+#include "vemd/pipeline_setup.h"
 
 namespace vem::testing {
 
@@ -39,8 +40,8 @@ inline calib::CameraCalibration smallCamera() {
 }
 inline std::string smallCameraToml() { return calib::io::formatCameraFile(smallCamera()); }
 
-inline vemd::ProcessingOptions smallProcessing() {
-  vemd::ProcessingOptions o;
+inline vem::ProcessingOptions smallProcessing() {
+  vem::ProcessingOptions o;
   o.mapWidth = 256;
   o.mapHeight = 64;
   o.lightCount = 64;
@@ -50,7 +51,7 @@ inline vemd::ProcessingOptions smallProcessing() {
 
 // Frame i: the procedural sky turned by i columns, read noise seeded by i, exposure changing
 // every 4 frames (the log sensor ignores it, the code table is rebuilt anyway).
-inline calib::RawFrame skyFrame(int index) {
+inline vem::RawFrame skyFrame(int index) {
   static const EnvMap sky = proceduralSky(MapLayout::Sphere, 128, 64);
   calib::SimulationOptions options;
   options.supersamples = 1;
@@ -63,9 +64,9 @@ inline calib::RawFrame skyFrame(int index) {
 inline constexpr int kCachedFrames = 16;
 
 // skyFrame(index % kCachedFrames), made once per process (thread-safe).
-inline const calib::RawFrame& cachedSkyFrame(int index) {
-  static const std::vector<calib::RawFrame> frames = [] {
-    std::vector<calib::RawFrame> made;
+inline const vem::RawFrame& cachedSkyFrame(int index) {
+  static const std::vector<vem::RawFrame> frames = [] {
+    std::vector<vem::RawFrame> made;
     for (int i = 0; i < kCachedFrames; ++i) made.push_back(skyFrame(i));
     return made;
   }();
@@ -86,8 +87,8 @@ inline recording::RecordingHeader smallRecordingHeader() {
   return h;
 }
 
-inline vemd::CapturedFrame captured(const calib::RawFrame& frame, std::uint64_t seq) {
-  return {frame, seq, std::int64_t(seq) * kFramePeriodNs, vemd::monotonicNowNs()};
+inline vem::CapturedFrame captured(const vem::RawFrame& frame, std::uint64_t seq) {
+  return {frame, seq, std::int64_t(seq) * kFramePeriodNs, vem::monotonicNowNs()};
 }
 
 // A recording of `count` sky frames (seq i, ts i x 33.3 ms), each with the lights a fresh
@@ -95,10 +96,10 @@ inline vemd::CapturedFrame captured(const calib::RawFrame& frame, std::uint64_t 
 inline void writeSkyRecording(const fs::path& path, int count, bool withLights) {
   auto writer = recording::RecordingWriter::create(path, smallRecordingHeader());
   ASSERT_TRUE(writer) << writer.error().message;
-  auto pipeline = vemd::Pipeline::create(smallCameraToml(), "test camera", smallProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile(smallCameraToml(), "test camera", smallProcessing());
   ASSERT_TRUE(pipeline) << pipeline.error();
   for (int i = 0; i < count; ++i) {
-    const vemd::CapturedFrame frame = captured(cachedSkyFrame(i), std::uint64_t(i));
+    const vem::CapturedFrame frame = captured(cachedSkyFrame(i), std::uint64_t(i));
     const LightSet* lights = withLights ? &pipeline->process(frame).lights : nullptr;
     auto appended = writer->append(frame.seq, frame.captureTsNs, frame.frame, lights);
     ASSERT_TRUE(appended) << appended.error().message;
@@ -153,19 +154,19 @@ class Gate {
 
 // A source that delivers sky frames (or scripted errors), each only when the test releases it:
 // release(n) lets n more frames out. Every next() beyond the script is EndOfStream.
-class ScriptedSource final : public vemd::FrameSource {
+class ScriptedSource final : public vem::FrameSource {
  public:
   struct Step {
-    std::optional<vemd::SourceError> error;  // else a frame
+    std::optional<vem::SourceError> error;  // else a frame
   };
   ScriptedSource(std::vector<Step> script, bool paced)
       : script_(std::move(script)), paced_(paced) {}
 
   static std::vector<Step> frames(int count) { return std::vector<Step>(std::size_t(count)); }
 
-  [[nodiscard]] vemd::SourceDescription describe() const override {
+  [[nodiscard]] vem::SourceDescription describe() const override {
     const calib::CameraCalibration camera = smallCamera();
-    vemd::SourceDescription d;
+    vem::SourceDescription d;
     d.spec = "scripted";
     d.sensorWidthPx = kSensorWidth;
     d.sensorHeightPx = kSensorHeight;
@@ -177,7 +178,7 @@ class ScriptedSource final : public vemd::FrameSource {
     return d;
   }
 
-  [[nodiscard]] std::expected<vemd::CapturedFrame, vemd::SourceError> next() override {
+  [[nodiscard]] std::expected<vem::CapturedFrame, vem::SourceError> next() override {
     {
       std::unique_lock lock(mutex_);
       ++calls_;
@@ -185,21 +186,21 @@ class ScriptedSource final : public vemd::FrameSource {
       changed_.wait(lock, [&] { return interrupted_ || released_ > 0 || !gated_; });
       if (interrupted_) {
         interrupted_ = false;
-        return std::unexpected(vemd::SourceError{vemd::SourceErrorCause::Timeout, "interrupted"});
+        return std::unexpected(vem::SourceError{vem::SourceErrorCause::Timeout, "interrupted"});
       }
       if (gated_) --released_;
     }
     if (position_ >= script_.size()) {
-      return std::unexpected(vemd::SourceError{vemd::SourceErrorCause::EndOfStream, "the end"});
+      return std::unexpected(vem::SourceError{vem::SourceErrorCause::EndOfStream, "the end"});
     }
     const Step step = script_[position_++];
     if (step.error) return std::unexpected(*step.error);
     const std::uint64_t seq = delivered_++;
-    vemd::CapturedFrame frame = captured(cachedSkyFrame(int(seq)), seq);
-    frame.captureTsNs = vemd::monotonicNowNs();
+    vem::CapturedFrame frame = captured(cachedSkyFrame(int(seq)), seq);
+    frame.captureTsNs = vem::monotonicNowNs();
     return frame;
   }
-  void recycle(vemd::CapturedFrame&&) override { recycled_.fetch_add(1); }
+  void recycle(vem::CapturedFrame&&) override { recycled_.fetch_add(1); }
   void interrupt() override {
     {
       std::lock_guard lock(mutex_);
@@ -242,7 +243,7 @@ class ScriptedSource final : public vemd::FrameSource {
 };
 
 // Records what it was given; optionally sleeps per frame, fails at frame k, or waits at a gate.
-class TestSink final : public vemd::Sink {
+class TestSink final : public vem::Sink {
  public:
   struct Log {
     std::mutex mutex;
@@ -258,19 +259,19 @@ class TestSink final : public vemd::Sink {
   Gate* gate = nullptr;
 
   [[nodiscard]] std::string name() const override { return name_; }
-  [[nodiscard]] std::expected<void, vemd::SinkFailure> consume(
-      const vemd::ProcessedFrame& frame) override {
+  [[nodiscard]] std::expected<void, vem::SinkFailure> consume(
+      const vem::ProcessedFrame& frame) override {
     if (gate != nullptr) gate->pass();
     if (sleepPerFrame.count() > 0) std::this_thread::sleep_for(sleepPerFrame);
     std::lock_guard lock(log_->mutex);
     if (failAtFrame && log_->seqs.size() == *failAtFrame) {
-      return std::unexpected(vemd::SinkFailure{name_ + ": the disk is full"});
+      return std::unexpected(vem::SinkFailure{name_ + ": the disk is full"});
     }
     log_->seqs.push_back(frame.captured->seq);
     log_->lights.push_back(frame.lights);
     return {};
   }
-  [[nodiscard]] std::expected<void, vemd::SinkFailure> close() override {
+  [[nodiscard]] std::expected<void, vem::SinkFailure> close() override {
     std::lock_guard lock(log_->mutex);
     log_->closed = true;
     return {};

@@ -27,7 +27,7 @@ std::vector<std::string> modesOf(ArvCamera* camera) {
   for (guint i = 0; names != nullptr && i < count; ++i) {
     const NativePixelFormat* native = nativeFormatByName(names[i]);
     if (native == nullptr) continue;
-    const std::string name = calib::pixelFormatName(native->format);
+    const std::string name = pixelFormatName(native->format);
     modes.push_back(name == native->genicamName
                         ? fmt::format("{} {}x{}", name, maxW, maxH)
                         : fmt::format("{} {}x{} (as {})", name, maxW, maxH, native->genicamName));

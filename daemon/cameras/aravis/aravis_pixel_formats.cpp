@@ -9,8 +9,7 @@ namespace vem::cameras {
 
 namespace {
 
-constexpr calib::PixelFormat kMono8{1, 8}, kMono10{1, 10}, kMono12{1, 12}, kMono16{1, 16},
-    kRgb8{3, 8};
+constexpr PixelFormat kMono8{1, 8}, kMono10{1, 10}, kMono12{1, 12}, kMono16{1, 16}, kRgb8{3, 8};
 
 constexpr std::array kFormats{
     NativePixelFormat{"Mono16", 0x01100007u, kMono16, PixelLayout::Words16, 16},
@@ -93,9 +92,9 @@ std::size_t payloadBytes(const NativePixelFormat& native, int widthPx, int heigh
 
 std::expected<const NativePixelFormat*, std::string> chooseNativeFormat(
     std::string_view wanted, const std::vector<std::string>& offered) {
-  std::optional<calib::PixelFormat> target;
+  std::optional<PixelFormat> target;
   if (!wanted.empty()) {
-    target = calib::parsePixelFormat(wanted);
+    target = parsePixelFormat(wanted);
     const bool known =
         target && std::ranges::any_of(kFormats, [&](const auto& f) { return f.format == *target; });
     if (!known) {

@@ -1,5 +1,5 @@
 // The native GenICam pixel formats the Aravis backend reads, and their conversion into RawFrame
-// codes (calib/core/raw_frame.h: row-major, channels interleaved, widened to uint16). Pure.
+// codes (daemon/frames/raw_frame.h: row-major, channels interleaved, widened to uint16). Pure.
 //
 // Layouts (GenICam PFNC 2.4 and GigE Vision 2.x), pixels in readout order, rows unpadded:
 // - Mono8: one byte per pixel. RGB8 (GigE Vision 1.x calls it RGB8Packed; same code 0x02180014):
@@ -20,7 +20,7 @@
 #include <string_view>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras {
 
@@ -29,7 +29,7 @@ enum class PixelLayout { Bytes8, Words16, GvPacked, PfncPacked };
 struct NativePixelFormat {
   std::string_view genicamName;  // the PixelFormat enumeration entry: "Mono12Packed"
   std::uint32_t code = 0;        // PFNC / GigE Vision code, as buffers carry it
-  calib::PixelFormat format;     // what the pipeline receives
+  PixelFormat format;            // what the pipeline receives
   PixelLayout layout = PixelLayout::Bytes8;
   int bitsPerPixel = 8;  // on the wire, all channels
 };

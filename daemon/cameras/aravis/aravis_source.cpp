@@ -22,9 +22,6 @@ namespace vem::cameras {
 
 namespace {
 
-using vemd::SourceError;
-using vemd::SourceErrorCause;
-
 constexpr std::size_t kMaxSpareBuffers = 8;
 constexpr std::uint64_t kPopAfterDoneUs = 200'000;  // the buffer follows its BUFFER_DONE at once
 constexpr std::int64_t kMaxProbeWaitMs = 1000;
@@ -129,7 +126,7 @@ struct AravisSource::Impl {
   std::string id;
   std::string spec;
   CameraSettings settings;
-  vemd::SourceDescription description;
+  SourceDescription description;
   WaitState waitState;
   std::unique_ptr<AravisSession> session;
   FrameIdUnwrapper unwrapper;
@@ -174,12 +171,12 @@ struct AravisSource::Impl {
     return error(SourceErrorCause::NoDevice, why);
   }
 
-  std::expected<vemd::CapturedFrame, SourceError> waitForFrame();
-  std::expected<vemd::CapturedFrame, SourceError> take(ArvBuffer* buffer);
+  std::expected<CapturedFrame, SourceError> waitForFrame();
+  std::expected<CapturedFrame, SourceError> take(ArvBuffer* buffer);
   SourceError refuse(ArvBuffer* buffer, const std::string& why);
 };
 
-std::expected<std::unique_ptr<AravisSource>, vemd::SourceError> AravisSource::open(
+std::expected<std::unique_ptr<AravisSource>, SourceError> AravisSource::open(
     const std::string& id, const CameraSettings& settings) {
   auto impl = std::make_unique<Impl>();
   impl->id = id;
@@ -189,7 +186,7 @@ std::expected<std::unique_ptr<AravisSource>, vemd::SourceError> AravisSource::op
     return std::unexpected(impl->error(SourceErrorCause::NoDevice, opened.error()));
   }
   const AravisSession& session = *impl->session;
-  vemd::SourceDescription& d = impl->description;
+  SourceDescription& d = impl->description;
   d.spec = impl->spec;
   d.cameraModel = session.identity().model;
   d.cameraSerial = session.identity().serial;
@@ -207,9 +204,9 @@ AravisSource::AravisSource(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) 
 
 AravisSource::~AravisSource() = default;
 
-vemd::SourceDescription AravisSource::describe() const { return impl_->description; }
+SourceDescription AravisSource::describe() const { return impl_->description; }
 
-std::expected<vemd::CapturedFrame, vemd::SourceError> AravisSource::next() {
+std::expected<CapturedFrame, SourceError> AravisSource::next() {
   Impl& s = *impl_;
   if (!s.session) {
     if (auto opened = s.openSession(); !opened) {
@@ -221,8 +218,8 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> AravisSource::next() {
   return s.waitForFrame();
 }
 
-std::expected<vemd::CapturedFrame, SourceError> AravisSource::Impl::waitForFrame() {
-  const std::int64_t deadline = vemd::monotonicNowNs() + settings.timeoutMs * 1'000'000;
+std::expected<CapturedFrame, SourceError> AravisSource::Impl::waitForFrame() {
+  const std::int64_t deadline = monotonicNowNs() + settings.timeoutMs * 1'000'000;
   for (;;) {
     switch (waitState.wait(deadline)) {
       case Wake::Interrupted:
@@ -256,7 +253,7 @@ SourceError AravisSource::Impl::refuse(ArvBuffer* buffer, const std::string& why
   return error(SourceErrorCause::BadFrame, fmt::format("frame {} {}", frameId, why));
 }
 
-std::expected<vemd::CapturedFrame, SourceError> AravisSource::Impl::take(ArvBuffer* buffer) {
+std::expected<CapturedFrame, SourceError> AravisSource::Impl::take(ArvBuffer* buffer) {
   const ArvBufferStatus status = arv_buffer_get_status(buffer);
   if (status != ARV_BUFFER_STATUS_SUCCESS) {
     return std::unexpected(refuse(buffer, fmt::format("came back {}", bufferStatusName(status))));
@@ -272,7 +269,7 @@ std::expected<vemd::CapturedFrame, SourceError> AravisSource::Impl::take(ArvBuff
                             arv_buffer_get_image_pixel_format(buffer), geometry.widthPx,
                             geometry.heightPx, geometry.native->genicamName)));
   }
-  vemd::CapturedFrame out;
+  CapturedFrame out;
   if (!spareCodes.empty()) {
     out.frame.codes = std::move(spareCodes.back());
     spareCodes.pop_back();
@@ -290,7 +287,7 @@ std::expected<vemd::CapturedFrame, SourceError> AravisSource::Impl::take(ArvBuff
   const FrameIdUnwrapper::Step step = unwrapper.next(frameId);
   lost.fetch_add(step.skipped);
   completed.fetch_add(1);
-  out.arrivalNs = vemd::monotonicNowNs();
+  out.arrivalNs = monotonicNowNs();
   out.captureTsNs = systemTsNs - realtimeMinusMonotonicNs();
   out.seq = step.seq;
   out.frame.width = width;
@@ -303,7 +300,7 @@ std::expected<vemd::CapturedFrame, SourceError> AravisSource::Impl::take(ArvBuff
   return out;
 }
 
-void AravisSource::recycle(vemd::CapturedFrame&& spent) {
+void AravisSource::recycle(CapturedFrame&& spent) {
   if (impl_->spareCodes.size() < kMaxSpareBuffers && spent.frame.codes.capacity() > 0) {
     impl_->spareCodes.push_back(std::move(spent.frame.codes));
   }
@@ -321,7 +318,7 @@ std::expected<void, std::string> AravisSource::setExposure(double exposureUs, do
   s.settings.gain = gain;
   s.exposure.previous = s.exposure.current;
   s.exposure.current = readExposureGain(s.session->camera());
-  s.exposure.changedNs = vemd::monotonicNowNs();
+  s.exposure.changedNs = monotonicNowNs();
   return {};
 }
 

@@ -1,5 +1,5 @@
 // AravisSource: a GenICam camera (GigE Vision or USB3 Vision) read through Aravis 0.8, as vemd's
-// FrameSource (daemon/vemd/frame_source.h); `vemd --source aravis:ID`. docs/cameras.md has the
+// FrameSource (daemon/frames/frame_source.h); `vemd --source aravis:ID`. docs/cameras.md has the
 // user's side (specs, network and USB set-up).
 //
 // - ID: a dotted IPv4 address ("192.168.1.20", "127.0.0.1") opens that GigE Vision camera
@@ -19,7 +19,7 @@
 //   host), which Aravis 0.8 takes from g_get_real_time() (CLOCK_REALTIME, microseconds). It is
 //   moved to CLOCK_MONOTONIC by the offset between the two clocks read at handover, so it is
 //   comparable with arrivalNs (a clock step between arrival and handover shifts one frame's
-//   timestamp by the step). arrivalNs is vemd::monotonicNowNs() at handover.
+//   timestamp by the step). arrivalNs is monotonicNowNs() at handover.
 // - exposureUs, gain: read back from the camera after every change (setExposure); a frame carries
 //   the new values when its whole exposure started after the change was read back, the old ones
 //   before. With ExposureAuto or GainAuto on, they are read back for every frame.
@@ -42,7 +42,7 @@
 #include <vector>
 
 #include "cameras/camera_settings.h"
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::cameras {
 
@@ -53,21 +53,21 @@ struct AravisCounters {
   std::uint64_t reopened = 0;    // successful reopens after the camera was lost
 };
 
-class AravisSource final : public vemd::FrameSource {
+class AravisSource final : public FrameSource {
  public:
   static constexpr int kTimeoutsBeforeLost = 3;
 
   // Opens the camera `id` (what follows "aravis:") with `settings` and starts streaming.
   // NoDevice with one sentence when it is absent or refuses the settings.
-  [[nodiscard]] static std::expected<std::unique_ptr<AravisSource>, vemd::SourceError> open(
+  [[nodiscard]] static std::expected<std::unique_ptr<AravisSource>, SourceError> open(
       const std::string& id, const CameraSettings& settings);
   ~AravisSource() override;
   AravisSource(const AravisSource&) = delete;
   AravisSource& operator=(const AravisSource&) = delete;
 
-  [[nodiscard]] vemd::SourceDescription describe() const override;
-  [[nodiscard]] std::expected<vemd::CapturedFrame, vemd::SourceError> next() override;
-  void recycle(vemd::CapturedFrame&& spent) override;
+  [[nodiscard]] SourceDescription describe() const override;
+  [[nodiscard]] std::expected<CapturedFrame, SourceError> next() override;
+  void recycle(CapturedFrame&& spent) override;
   void interrupt() override;
   [[nodiscard]] std::expected<void, std::string> setExposure(double exposureUs,
                                                              double gain) override;

@@ -12,8 +12,8 @@
 namespace vem::cameras {
 namespace {
 
-vemd::SourceError noDevice(std::string message) {
-  return vemd::SourceError{vemd::SourceErrorCause::NoDevice, std::move(message)};
+SourceError noDevice(std::string message) {
+  return SourceError{SourceErrorCause::NoDevice, std::move(message)};
 }
 
 std::string bracketSpec(const BracketSettings& settings, const std::string& innerSpec) {
@@ -22,7 +22,7 @@ std::string bracketSpec(const BracketSettings& settings, const std::string& inne
 
 // The inner camera's calibration, or why it cannot be bracketed.
 std::expected<calib::CameraCalibration, std::string> ldrCalibration(
-    const vemd::SourceDescription& inner) {
+    const SourceDescription& inner) {
   if (inner.calibrationToml.empty()) {
     return std::unexpected(fmt::format(
         "{}: the camera has no camera file: bracketing needs its response (vemcalib response)",
@@ -44,8 +44,8 @@ std::expected<calib::CameraCalibration, std::string> ldrCalibration(
   }
   if (camera->camera.pixelFormat != inner.pixelFormat) {
     return std::unexpected(fmt::format("{}: the camera delivers {} but its camera file is for {}",
-                                       inner.spec, calib::pixelFormatName(inner.pixelFormat),
-                                       calib::pixelFormatName(camera->camera.pixelFormat)));
+                                       inner.spec, pixelFormatName(inner.pixelFormat),
+                                       pixelFormatName(camera->camera.pixelFormat)));
   }
   return std::move(*camera);
 }
@@ -54,10 +54,10 @@ std::size_t maxFramesWithoutGroup(std::size_t count) { return 4 * count + 8; }
 
 }  // namespace
 
-std::expected<std::unique_ptr<BracketingSource>, vemd::SourceError> BracketingSource::create(
-    std::unique_ptr<vemd::FrameSource> inner, BracketSettings settings) {
+std::expected<std::unique_ptr<BracketingSource>, SourceError> BracketingSource::create(
+    std::unique_ptr<FrameSource> inner, BracketSettings settings) {
   VEM_EXPECTS(inner);
-  const vemd::SourceDescription description = inner->describe();
+  const SourceDescription description = inner->describe();
   if (auto problem = bracketSettingsProblem(settings)) {
     return std::unexpected(noDevice(fmt::format("{}: {}", description.spec, *problem)));
   }
@@ -81,9 +81,9 @@ std::expected<std::unique_ptr<BracketingSource>, vemd::SourceError> BracketingSo
       std::move(inner), settings, std::move(*camera), std::move(*sensor), std::move(toml)));
 }
 
-BracketingSource::BracketingSource(std::unique_ptr<vemd::FrameSource> inner,
-                                   BracketSettings settings, calib::CameraCalibration ldrCamera,
-                                   VirtualHdrSensor sensor, std::string virtualToml)
+BracketingSource::BracketingSource(std::unique_ptr<FrameSource> inner, BracketSettings settings,
+                                   calib::CameraCalibration ldrCamera, VirtualHdrSensor sensor,
+                                   std::string virtualToml)
     : inner_(std::move(inner)),
       innerDescription_(inner_->describe()),
       settings_(settings),
@@ -100,8 +100,8 @@ BracketingSource::BracketingSource(std::unique_ptr<vemd::FrameSource> inner,
           }(),
           settings.matchTolerance) {}
 
-vemd::SourceDescription BracketingSource::describe() const {
-  vemd::SourceDescription d = innerDescription_;
+SourceDescription BracketingSource::describe() const {
+  SourceDescription d = innerDescription_;
   d.spec = bracketSpec(settings_, innerDescription_.spec);
   d.pixelFormat = sensor_.format;
   d.calibrationToml = virtualToml_;
@@ -117,7 +117,7 @@ void BracketingSource::requestExposure() {
   }
 }
 
-std::expected<vemd::CapturedFrame, vemd::SourceError> BracketingSource::next() {
+std::expected<CapturedFrame, SourceError> BracketingSource::next() {
   const calib::CameraIdentity& camera = ldrCamera_.camera;
   for (std::size_t pulled = 0;; ++pulled) {
     requestExposure();
@@ -128,15 +128,15 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> BracketingSource::next() {
     }
     requestIndex_ = (requestIndex_ + 1) % exposuresUs_.size();
     ++counters_.framesIn;
-    const calib::RawFrame& frame = got->frame;
+    const RawFrame& frame = got->frame;
     if (frame.width != camera.sensorWidthPx || frame.height != camera.sensorHeightPx ||
         frame.format != camera.pixelFormat) {
-      auto error = vemd::SourceError{
-          vemd::SourceErrorCause::BadFrame,
+      auto error = SourceError{
+          SourceErrorCause::BadFrame,
           fmt::format("{}: frame {} is {} x {} {}, but the camera file is for {} x {} {}",
                       describe().spec, got->seq, frame.width, frame.height,
-                      calib::pixelFormatName(frame.format), camera.sensorWidthPx,
-                      camera.sensorHeightPx, calib::pixelFormatName(camera.pixelFormat))};
+                      pixelFormatName(frame.format), camera.sensorWidthPx, camera.sensorHeightPx,
+                      pixelFormatName(camera.pixelFormat))};
       dropPending(grouper_.reset(), BracketDropReason::Error);
       dropFrame(std::move(*got), BracketDropReason::Error);
       return std::unexpected(std::move(error));
@@ -153,7 +153,7 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> BracketingSource::next() {
       continue;
     }
     pendingFrames_.push_back(std::move(got->frame));
-    got->frame = calib::RawFrame{};
+    got->frame = RawFrame{};
     pendingIds_.push_back(std::move(*got));
     if (step.complete) return mergeGroup();
     if (pulled + 1 >= maxFramesWithoutGroup(exposuresUs_.size())) {
@@ -162,13 +162,13 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> BracketingSource::next() {
   }
 }
 
-vemd::SourceError BracketingSource::noGroupError(const calib::RawFrame& last) const {
+SourceError BracketingSource::noGroupError(const RawFrame& last) const {
   std::string expected;
   for (const double e : exposuresUs_) {
     expected += fmt::format("{}{:.6g}", expected.empty() ? "" : ", ", e * settings_.gain);
   }
-  return vemd::SourceError{
-      vemd::SourceErrorCause::BadFrame,
+  return SourceError{
+      SourceErrorCause::BadFrame,
       fmt::format(
           "{}: no complete bracket in the last {} frames: the last frame reports exposure "
           "{:.6g} us x gain {:.6g}, expected exposure x gain {} us in turn{}",
@@ -177,8 +177,8 @@ vemd::SourceError BracketingSource::noGroupError(const calib::RawFrame& last) co
           lastRefusal_.empty() ? "" : " (the camera refused a request: " + lastRefusal_ + ")")};
 }
 
-vemd::CapturedFrame BracketingSource::mergeGroup() {
-  vemd::CapturedFrame out;
+CapturedFrame BracketingSource::mergeGroup() {
+  CapturedFrame out;
   if (!spareCodes_.empty()) {
     out.frame.codes = std::move(spareCodes_.back());
     spareCodes_.pop_back();
@@ -225,12 +225,12 @@ void BracketingSource::dropPending(std::size_t frames, BracketDropReason reason)
   pendingIds_.clear();
 }
 
-void BracketingSource::dropFrame(vemd::CapturedFrame&& frame, BracketDropReason reason) {
+void BracketingSource::dropFrame(CapturedFrame&& frame, BracketDropReason reason) {
   count(1, reason);
   inner_->recycle(std::move(frame));
 }
 
-void BracketingSource::recycle(vemd::CapturedFrame&& spent) {
+void BracketingSource::recycle(CapturedFrame&& spent) {
   constexpr std::size_t kMaxSpareBuffers = 8;
   if (spareCodes_.size() < kMaxSpareBuffers && spent.frame.codes.capacity() > 0) {
     spareCodes_.push_back(std::move(spent.frame.codes));

@@ -42,7 +42,7 @@
 #include "cameras/bracketing/bracket_settings.h"
 #include "cameras/bracketing/virtual_hdr_merge.h"
 #include "cameras/bracketing/virtual_hdr_sensor.h"
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::cameras {
 
@@ -59,17 +59,17 @@ struct BracketCounters {
   // Always: framesIn == groups * K + framesDropped + frames of the group in progress.
 };
 
-class BracketingSource final : public vemd::FrameSource {
+class BracketingSource final : public FrameSource {
  public:
   // Checks the settings, reads the inner camera file (it needs a photometric section whose
   // response depends on exposure, i.e. "table" or "linear") and asks for the first exposure.
   // NoDevice with one sentence when any of that fails, naming the inner source's spec.
-  [[nodiscard]] static std::expected<std::unique_ptr<BracketingSource>, vemd::SourceError> create(
-      std::unique_ptr<vemd::FrameSource> inner, BracketSettings settings);
+  [[nodiscard]] static std::expected<std::unique_ptr<BracketingSource>, SourceError> create(
+      std::unique_ptr<FrameSource> inner, BracketSettings settings);
 
-  [[nodiscard]] vemd::SourceDescription describe() const override;
-  [[nodiscard]] std::expected<vemd::CapturedFrame, vemd::SourceError> next() override;
-  void recycle(vemd::CapturedFrame&& spent) override;
+  [[nodiscard]] SourceDescription describe() const override;
+  [[nodiscard]] std::expected<CapturedFrame, SourceError> next() override;
+  void recycle(CapturedFrame&& spent) override;
   void interrupt() override;
   // Refused: the source sets the exposure itself.
   [[nodiscard]] std::expected<void, std::string> setExposure(double exposureUs,
@@ -83,18 +83,18 @@ class BracketingSource final : public vemd::FrameSource {
   [[nodiscard]] const VirtualHdrMergeStats& lastMergeStats() const { return lastStats_; }
 
  private:
-  BracketingSource(std::unique_ptr<vemd::FrameSource> inner, BracketSettings settings,
+  BracketingSource(std::unique_ptr<FrameSource> inner, BracketSettings settings,
                    calib::CameraCalibration ldrCamera, VirtualHdrSensor sensor,
                    std::string virtualToml);
   void requestExposure();
   void dropPending(std::size_t frames, BracketDropReason reason);
-  void dropFrame(vemd::CapturedFrame&& frame, BracketDropReason reason);
+  void dropFrame(CapturedFrame&& frame, BracketDropReason reason);
   void count(std::size_t frames, BracketDropReason reason);
-  [[nodiscard]] vemd::CapturedFrame mergeGroup();
-  [[nodiscard]] vemd::SourceError noGroupError(const calib::RawFrame& last) const;
+  [[nodiscard]] CapturedFrame mergeGroup();
+  [[nodiscard]] SourceError noGroupError(const RawFrame& last) const;
 
-  std::unique_ptr<vemd::FrameSource> inner_;
-  vemd::SourceDescription innerDescription_;
+  std::unique_ptr<FrameSource> inner_;
+  SourceDescription innerDescription_;
   BracketSettings settings_;
   std::vector<double> exposuresUs_;
   calib::CameraCalibration ldrCamera_;
@@ -106,8 +106,8 @@ class BracketingSource final : public vemd::FrameSource {
   std::string lastRefusal_;
 
   // The group in progress: frames and their identities, in order.
-  std::vector<calib::RawFrame> pendingFrames_;
-  std::vector<vemd::CapturedFrame> pendingIds_;  // seq and times; frame left empty
+  std::vector<RawFrame> pendingFrames_;
+  std::vector<CapturedFrame> pendingIds_;  // seq and times; frame left empty
 
   BracketMergeScratch scratch_;
   std::vector<std::vector<std::uint16_t>> spareCodes_;

@@ -37,7 +37,7 @@ double fastLog2(float value, const std::array<float, kLogEntries + 1>& table) {
   return double(exponent) + double(table[index] + (table[index + 1] - table[index]) * t);
 }
 
-const calib::BracketLut& lutFor(const calib::RawFrame& frame, std::size_t slot,
+const calib::BracketLut& lutFor(const RawFrame& frame, std::size_t slot,
                                 const calib::PhotometricCalibration& ldr,
                                 const calib::BracketWeighting& weighting,
                                 std::vector<calib::BracketLut>& luts) {
@@ -52,7 +52,7 @@ const calib::BracketLut& lutFor(const calib::RawFrame& frame, std::size_t slot,
 
 }  // namespace
 
-void mergeBracketRadiance(std::span<const calib::RawFrame> frames,
+void mergeBracketRadiance(std::span<const RawFrame> frames,
                           const calib::PhotometricCalibration& ldr,
                           const calib::BracketWeighting& weighting, BracketMergeScratch& scratch) {
   VEM_EXPECTS(!frames.empty());
@@ -63,7 +63,7 @@ void mergeBracketRadiance(std::span<const calib::RawFrame> frames,
 }
 
 VirtualHdrMergeStats encodeVirtualHdr(const calib::MergedBracket& merged,
-                                      const VirtualHdrSensor& sensor, calib::RawFrame& out) {
+                                      const VirtualHdrSensor& sensor, RawFrame& out) {
   VEM_EXPECTS(merged.channels == sensor.format.channels);
   out.width = merged.width;
   out.height = merged.height;
@@ -100,11 +100,11 @@ VirtualHdrMergeStats encodeVirtualHdr(const calib::MergedBracket& merged,
   return stats;
 }
 
-VirtualHdrMergeStats mergeToVirtualHdr(std::span<const calib::RawFrame> frames,
+VirtualHdrMergeStats mergeToVirtualHdr(std::span<const RawFrame> frames,
                                        const calib::PhotometricCalibration& ldr,
                                        const calib::BracketWeighting& weighting,
                                        const VirtualHdrSensor& sensor, BracketMergeScratch& scratch,
-                                       calib::RawFrame& out) {
+                                       RawFrame& out) {
   mergeBracketRadiance(frames, ldr, weighting, scratch);
   return encodeVirtualHdr(scratch.merged, sensor, out);
 }

@@ -18,8 +18,8 @@
 
 #include "calib/core/bracket_merge.h"
 #include "calib/core/photometric_model.h"
-#include "calib/core/raw_frame.h"
 #include "cameras/bracketing/virtual_hdr_sensor.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras {
 
@@ -38,22 +38,20 @@ struct BracketMergeScratch {
 };
 
 // The merged radiance of `frames` (calib's merge with `ldr` and `weighting`) into scratch.merged.
-void mergeBracketRadiance(std::span<const calib::RawFrame> frames,
+void mergeBracketRadiance(std::span<const RawFrame> frames,
                           const calib::PhotometricCalibration& ldr,
                           const calib::BracketWeighting& weighting, BracketMergeScratch& scratch);
 
 // Radiance (cd/m^2, the layout of `merged`) to the sensor's codes, into out.codes (resized); sets
 // out's size and format, leaves its exposure and gain.
 [[nodiscard]] VirtualHdrMergeStats encodeVirtualHdr(const calib::MergedBracket& merged,
-                                                    const VirtualHdrSensor& sensor,
-                                                    calib::RawFrame& out);
+                                                    const VirtualHdrSensor& sensor, RawFrame& out);
 
 // Both: the group `frames` as one frame of `sensor`.
-[[nodiscard]] VirtualHdrMergeStats mergeToVirtualHdr(std::span<const calib::RawFrame> frames,
+[[nodiscard]] VirtualHdrMergeStats mergeToVirtualHdr(std::span<const RawFrame> frames,
                                                      const calib::PhotometricCalibration& ldr,
                                                      const calib::BracketWeighting& weighting,
                                                      const VirtualHdrSensor& sensor,
-                                                     BracketMergeScratch& scratch,
-                                                     calib::RawFrame& out);
+                                                     BracketMergeScratch& scratch, RawFrame& out);
 
 }  // namespace vem::cameras

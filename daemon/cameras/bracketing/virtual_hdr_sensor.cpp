@@ -26,13 +26,13 @@ calib::PhotometricCalibration VirtualHdrSensor::photometric() const {
   return calib::PhotometricCalibration{response, 0.0, double(kVirtualTopCode)};
 }
 
-calib::BracketWeighting bracketWeightingFor(calib::PixelFormat ldrFormat) {
+calib::BracketWeighting bracketWeightingFor(PixelFormat ldrFormat) {
   const double scale = std::exp2(ldrFormat.bits - 8);
   return calib::BracketWeighting{kNoiseFloorCode8Bit * scale, kSaturationMarginCode8Bit * scale};
 }
 
 std::expected<VirtualHdrSensor, std::string> makeVirtualHdrSensor(
-    const calib::PhotometricCalibration& ldr, calib::PixelFormat ldrFormat,
+    const calib::PhotometricCalibration& ldr, PixelFormat ldrFormat,
     std::span<const double> effectiveExposuresUs, const calib::BracketWeighting& weighting) {
   const auto [shortest, longest] =
       std::minmax_element(effectiveExposuresUs.begin(), effectiveExposuresUs.end());
@@ -44,7 +44,7 @@ std::expected<VirtualHdrSensor, std::string> makeVirtualHdrSensor(
         darkestCode - 1.0, ldr.saturationCode - weighting.saturationMarginCode));
   }
   VirtualHdrSensor sensor;
-  sensor.format = calib::PixelFormat{ldrFormat.channels, 16};
+  sensor.format = PixelFormat{ldrFormat.channels, 16};
   for (int c = 0; c < 3; ++c) {
     const int from = c < ldrFormat.channels ? c : 0;
     const double lo = calib::luminanceFromCode(ldr, from, darkestCode, *longest, 1.0);

@@ -33,14 +33,14 @@
 #include "calib/core/bracket_merge.h"
 #include "calib/core/camera_calibration.h"
 #include "calib/core/photometric_model.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras {
 
 inline constexpr std::uint16_t kVirtualTopCode = 65535;
 
 struct VirtualHdrSensor {
-  calib::PixelFormat format{1, 16};
+  PixelFormat format{1, 16};
   calib::LogResponse response;      // channels beyond format.channels copy channel 0
   std::array<double, 3> minCdM2{};  // reads code 1
   std::array<double, 3> maxCdM2{};  // reads code 65535
@@ -55,13 +55,13 @@ struct VirtualHdrSensor {
 // 8 bits) scaled by 2^(bits - 8) on the saturation side; the noise floor is 10 codes at 8 bits
 // (scaled likewise), where the sRGB-like toe of an 8-bit response has relative steps of 10 %: a
 // rounded code then errs by at most 1 / (2 x 11) = 4.5 %.
-[[nodiscard]] calib::BracketWeighting bracketWeightingFor(calib::PixelFormat ldrFormat);
+[[nodiscard]] calib::BracketWeighting bracketWeightingFor(PixelFormat ldrFormat);
 
 // The sensor that spans what exposures `effectiveExposuresUs` (exposure x gain, any order) of the
 // LDR camera `ldr` can tell, with `weighting`'s noise floor. One sentence when the response gives
 // no usable range (no code above the noise floor below saturation, or a non-increasing response).
 [[nodiscard]] std::expected<VirtualHdrSensor, std::string> makeVirtualHdrSensor(
-    const calib::PhotometricCalibration& ldr, calib::PixelFormat ldrFormat,
+    const calib::PhotometricCalibration& ldr, PixelFormat ldrFormat,
     std::span<const double> effectiveExposuresUs, const calib::BracketWeighting& weighting);
 
 // The LDR camera's calibration turned into the virtual sensor's: the same identity, lens,

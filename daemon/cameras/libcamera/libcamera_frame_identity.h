@@ -1,4 +1,4 @@
-// LibcameraFrameIdentity: the seq and captureTsNs (vemd/captured_frame.h) a libcamera completion
+// LibcameraFrameIdentity: the seq and captureTsNs (frames/captured_frame.h) a libcamera completion
 // gets. Pure: the clocks are read by the caller.
 //
 // - seq: FrameMetadata::sequence counts frames per capture session (from start(), wrapping at

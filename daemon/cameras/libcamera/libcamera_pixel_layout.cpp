@@ -12,7 +12,7 @@ enum class Layout { Mono8, Mono16Le, Bgr8, Rgb8 };
 
 struct Taken {
   LibcameraPixelFormat format;
-  calib::PixelFormat pixel;
+  PixelFormat pixel;
   Layout layout;
 };
 
@@ -70,7 +70,7 @@ std::uint32_t unpackRows(const Taken& taken, LibcameraSize size, int strideBytes
 
 }  // namespace
 
-std::optional<calib::PixelFormat> calibFormatOf(const LibcameraPixelFormat& format) {
+std::optional<PixelFormat> calibFormatOf(const LibcameraPixelFormat& format) {
   const Taken* t = findTaken(format);
   if (!t) return std::nullopt;
   return t->pixel;
@@ -100,7 +100,7 @@ const std::vector<LibcameraPixelFormat>& libcameraTakenFormats() {
 std::optional<std::string> unpackLibcameraFrame(const LibcameraPixelFormat& format,
                                                 LibcameraSize size, int strideBytes,
                                                 std::span<const std::uint8_t> bytes,
-                                                calib::RawFrame& frame) {
+                                                RawFrame& frame) {
   const Taken* taken = findTaken(format);
   if (!taken)
     return fmt::format("vemd does not take the pixel format {}", libcameraFormatName(format));

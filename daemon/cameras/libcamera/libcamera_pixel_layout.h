@@ -1,5 +1,5 @@
 // How libcamera's pixel formats lay out a frame in memory, and how vemd widens them into RawFrame
-// codes (calib/core/raw_frame.h). Pure: no libcamera calls.
+// codes (daemon/frames/raw_frame.h). Pure: no libcamera calls.
 //
 // Formats vemd takes (libcamera's names; DRM fourccs, linear: modifier 0):
 //   R8     'R8  '  one byte per pixel                                   -> Mono8
@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
 #include "cameras/libcamera/libcamera_port.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras {
 
@@ -40,7 +40,7 @@ inline constexpr LibcameraPixelFormat kLibcameraRGB888{drmFourcc('R', 'G', '2', 
 inline constexpr LibcameraPixelFormat kLibcameraBGR888{drmFourcc('B', 'G', '2', '4'), 0};
 
 // The RawFrame format a libcamera format gives, or nullopt when vemd does not take it.
-[[nodiscard]] std::optional<calib::PixelFormat> calibFormatOf(const LibcameraPixelFormat& format);
+[[nodiscard]] std::optional<PixelFormat> calibFormatOf(const LibcameraPixelFormat& format);
 // Bytes one pixel takes in memory (taken formats only).
 [[nodiscard]] int libcameraBytesPerPixel(const LibcameraPixelFormat& format);
 // The formats vemd takes, deepest first ("" in CameraSettings::pixelFormat picks the first
@@ -53,6 +53,6 @@ inline constexpr LibcameraPixelFormat kLibcameraBGR888{drmFourcc('B', 'G', '2', 
 [[nodiscard]] std::optional<std::string> unpackLibcameraFrame(const LibcameraPixelFormat& format,
                                                               LibcameraSize size, int strideBytes,
                                                               std::span<const std::uint8_t> bytes,
-                                                              calib::RawFrame& frame);
+                                                              RawFrame& frame);
 
 }  // namespace vem::cameras

@@ -15,9 +15,6 @@ namespace vem::cameras {
 
 namespace {
 
-using vemd::SourceError;
-using vemd::SourceErrorCause;
-
 constexpr std::size_t kMaxSpareBuffers = 8;
 
 bool allDigits(const std::string& text) {
@@ -209,7 +206,7 @@ SourceError LibcameraSource::badFrame(std::uint64_t bufferIndex, std::string why
   return failure(SourceErrorCause::BadFrame, std::move(why));
 }
 
-std::expected<vemd::CapturedFrame, SourceError> LibcameraSource::next() {
+std::expected<CapturedFrame, SourceError> LibcameraSource::next() {
   if (!streaming_) {
     if (auto started = startCamera(false); !started) return std::unexpected(started.error());
     reopened_.fetch_add(1);
@@ -230,8 +227,7 @@ std::expected<vemd::CapturedFrame, SourceError> LibcameraSource::next() {
   return take(waited.completion);
 }
 
-std::expected<vemd::CapturedFrame, SourceError> LibcameraSource::take(
-    const LibcameraCompletion& c) {
+std::expected<CapturedFrame, SourceError> LibcameraSource::take(const LibcameraCompletion& c) {
   if (!streaming_ || c.bufferIndex >= buffers_.size()) {
     return std::unexpected(badFrame(c.bufferIndex, "a request of a stopped stream came back"));
   }
@@ -248,7 +244,7 @@ std::expected<vemd::CapturedFrame, SourceError> LibcameraSource::take(
     return std::unexpected(
         badFrame(c.bufferIndex, fmt::format("frame {} is out of sequence", c.sequence)));
   }
-  vemd::CapturedFrame out;
+  CapturedFrame out;
   if (!spareCodes_.empty()) {
     out.frame.codes = std::move(spareCodes_.back());
     spareCodes_.pop_back();
@@ -275,7 +271,7 @@ std::expected<vemd::CapturedFrame, SourceError> LibcameraSource::take(
     out.frame.gain = double(*asked.analogueGain);
   const LibcameraClock clock = port_->timestampClock();
   const std::int64_t clockNow = port_->clockNowNs(clock);
-  out.arrivalNs = vemd::monotonicNowNs();
+  out.arrivalNs = monotonicNowNs();
   out.captureTsNs = monotonicCaptureNs(c.timestampNs, clock, clockNow, out.arrivalNs);
   out.seq = numbered->seq;
   lost_.fetch_add(numbered->lost);
@@ -283,7 +279,7 @@ std::expected<vemd::CapturedFrame, SourceError> LibcameraSource::take(
   return out;
 }
 
-void LibcameraSource::recycle(vemd::CapturedFrame&& spent) {
+void LibcameraSource::recycle(CapturedFrame&& spent) {
   if (spareCodes_.size() < kMaxSpareBuffers && spent.frame.codes.capacity() > 0) {
     spareCodes_.push_back(std::move(spent.frame.codes));
   }
@@ -306,8 +302,8 @@ std::expected<void, std::string> LibcameraSource::setExposure(double exposureUs,
   return {};
 }
 
-vemd::SourceDescription LibcameraSource::describe() const {
-  vemd::SourceDescription d;
+SourceDescription LibcameraSource::describe() const {
+  SourceDescription d;
   d.spec = spec_;
   d.cameraModel = camera_.model.empty() ? "libcamera camera" : camera_.model;
   d.cameraSerial = camera_.id;

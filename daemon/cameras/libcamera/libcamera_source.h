@@ -1,5 +1,5 @@
 // LibcameraSource: a camera libcamera drives (Raspberry Pi CSI cameras, UVC webcams, ISP
-// pipelines: docs/cameras.md), as vemd's FrameSource (vemd/frame_source.h), `--source
+// pipelines: docs/cameras.md), as vemd's FrameSource (frames/frame_source.h), `--source
 // libcamera:ID`. ID is the camera's libcamera id (`vemd --list-devices`, `cam -l`) or its index in
 // that list.
 //
@@ -10,7 +10,7 @@
 //   frame out of its (mapped, dmabuf) buffer and queues the buffer again at once; recycle() only
 //   keeps the RawFrame's storage for later frames.
 // - Frames: seq and captureTsNs as libcamera_frame_identity.h says (gaps in the camera's sequence
-//   are counted as lost; captureTsNs on CLOCK_MONOTONIC); arrivalNs = vemd::monotonicNowNs() when
+//   are counted as lost; captureTsNs on CLOCK_MONOTONIC); arrivalNs = monotonicNowNs() when
 //   next() hands the frame over; exposureUs and gain from the request's metadata (ExposureTime,
 //   AnalogueGain), or when the camera reports none, from the controls that request carried, else
 //   RawFrame's defaults (1000 us, 1).
@@ -36,7 +36,7 @@
 #include "cameras/libcamera/libcamera_completion_queue.h"
 #include "cameras/libcamera/libcamera_frame_identity.h"
 #include "cameras/libcamera/libcamera_port.h"
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::cameras {
 
@@ -47,24 +47,24 @@ struct LibcameraCounters {
   std::uint64_t reopened = 0;   // times the camera was acquired again after it was lost
 };
 
-class LibcameraSource final : public vemd::FrameSource {
+class LibcameraSource final : public FrameSource {
  public:
   // Opens camera `id` through `port` and starts streaming. NoDevice with one sentence when the
   // camera is unknown, busy, or offers nothing that fits `settings`.
-  [[nodiscard]] static std::expected<std::unique_ptr<LibcameraSource>, vemd::SourceError> open(
+  [[nodiscard]] static std::expected<std::unique_ptr<LibcameraSource>, SourceError> open(
       std::unique_ptr<LibcameraCameraPort> port, const std::string& id,
       const CameraSettings& settings);
   // The same through libcamera itself (libcamera_system_port.h).
-  [[nodiscard]] static std::expected<std::unique_ptr<LibcameraSource>, vemd::SourceError> open(
+  [[nodiscard]] static std::expected<std::unique_ptr<LibcameraSource>, SourceError> open(
       const std::string& id, const CameraSettings& settings);
 
   ~LibcameraSource() override;
   LibcameraSource(const LibcameraSource&) = delete;
   LibcameraSource& operator=(const LibcameraSource&) = delete;
 
-  [[nodiscard]] vemd::SourceDescription describe() const override;
-  [[nodiscard]] std::expected<vemd::CapturedFrame, vemd::SourceError> next() override;
-  void recycle(vemd::CapturedFrame&& spent) override;
+  [[nodiscard]] SourceDescription describe() const override;
+  [[nodiscard]] std::expected<CapturedFrame, SourceError> next() override;
+  void recycle(CapturedFrame&& spent) override;
   void interrupt() override;
   [[nodiscard]] std::expected<void, std::string> setExposure(double exposureUs,
                                                              double gain) override;
@@ -77,15 +77,15 @@ class LibcameraSource final : public vemd::FrameSource {
                   LibcameraCameraInfo camera, LibcameraStreamConfig wanted,
                   const CameraSettings& settings);
 
-  [[nodiscard]] std::expected<void, vemd::SourceError> startCamera(bool first);
-  [[nodiscard]] std::expected<void, vemd::SourceError> configureStream(bool first);
+  [[nodiscard]] std::expected<void, SourceError> startCamera(bool first);
+  [[nodiscard]] std::expected<void, SourceError> configureStream(bool first);
   void closeCamera();
-  [[nodiscard]] std::expected<vemd::CapturedFrame, vemd::SourceError> take(
+  [[nodiscard]] std::expected<CapturedFrame, SourceError> take(
       const LibcameraCompletion& completion);
-  [[nodiscard]] vemd::SourceError badFrame(std::uint64_t bufferIndex, std::string why);
-  [[nodiscard]] std::expected<void, vemd::SourceError> requeue(std::uint64_t bufferIndex);
+  [[nodiscard]] SourceError badFrame(std::uint64_t bufferIndex, std::string why);
+  [[nodiscard]] std::expected<void, SourceError> requeue(std::uint64_t bufferIndex);
   [[nodiscard]] LibcameraControls startControls() const;
-  [[nodiscard]] vemd::SourceError failure(vemd::SourceErrorCause cause, std::string what) const;
+  [[nodiscard]] SourceError failure(SourceErrorCause cause, std::string what) const;
 
   // queue_ outlives port_ (members are destroyed in reverse order), so no callback finds it gone.
   LibcameraCompletionQueue queue_;

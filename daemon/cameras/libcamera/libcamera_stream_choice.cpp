@@ -16,7 +16,7 @@ int depthRank(const LibcameraPixelFormat& format) {
   return int(std::find(taken.begin(), taken.end(), format) - taken.begin());
 }
 
-int roleRank(LibcameraRole role, const calib::PixelFormat& pixel) {
+int roleRank(LibcameraRole role, const PixelFormat& pixel) {
   if (role == LibcameraRole::Viewfinder) return 2;
   const bool rawFirst = pixel.channels == 1;
   return (role == LibcameraRole::Raw) == rawFirst ? 0 : 1;
@@ -66,7 +66,7 @@ std::vector<std::string> libcameraModes(const LibcameraCameraInfo& camera) {
     if (!pixel) continue;
     for (const LibcameraSize& s : f.sizes) {
       std::string mode =
-          fmt::format("{} {}x{} ({}, {})", calib::pixelFormatName(*pixel), s.widthPx, s.heightPx,
+          fmt::format("{} {}x{} ({}, {})", pixelFormatName(*pixel), s.widthPx, s.heightPx,
                       libcameraFormatName(f.format), libcameraRoleName(f.role));
       if (std::find(modes.begin(), modes.end(), mode) == modes.end()) modes.push_back(mode);
     }
@@ -76,9 +76,9 @@ std::vector<std::string> libcameraModes(const LibcameraCameraInfo& camera) {
 
 std::expected<LibcameraStreamConfig, std::string> chooseLibcameraStream(
     const LibcameraCameraInfo& camera, const CameraSettings& settings, const std::string& spec) {
-  std::optional<calib::PixelFormat> wanted;
+  std::optional<PixelFormat> wanted;
   if (!settings.pixelFormat.empty()) {
-    wanted = calib::parsePixelFormat(settings.pixelFormat);
+    wanted = parsePixelFormat(settings.pixelFormat);
     if (!wanted) {
       return std::unexpected(fmt::format(
           "{}: the camera pixel format \"{}\" is not one of Mono8, Mono10, Mono12, Mono16, RGB8",
@@ -95,11 +95,11 @@ std::expected<LibcameraStreamConfig, std::string> chooseLibcameraStream(
     if (!best || rank(f) < rank(*best)) best = &f;
   }
   if (!best) {
-    return std::unexpected(fmt::format(
-        "{} ({}) offers no format that gives {}: it offers {}, and vemd takes {}", spec,
-        camera.model.empty() ? camera.id : camera.model,
-        wanted ? calib::pixelFormatName(*wanted) : std::string("any pixel format vemd takes"),
-        libcameraOffer(camera), takenNames()));
+    return std::unexpected(
+        fmt::format("{} ({}) offers no format that gives {}: it offers {}, and vemd takes {}", spec,
+                    camera.model.empty() ? camera.id : camera.model,
+                    wanted ? pixelFormatName(*wanted) : std::string("any pixel format vemd takes"),
+                    libcameraOffer(camera), takenNames()));
   }
   LibcameraStreamConfig config;
   config.role = best->role;

@@ -1,5 +1,5 @@
 // FrameSequence: turns the driver's v4l2_buffer::sequence into vemd's frame seq
-// (vemd/captured_frame.h): strictly increasing across the whole life of a source, with the
+// (frames/captured_frame.h): strictly increasing across the whole life of a source, with the
 // driver's gaps kept (a gap of k means k - 1 frames lost before we saw them) and counted.
 //
 // - The first frame gets seq 0.

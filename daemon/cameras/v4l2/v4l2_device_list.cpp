@@ -32,8 +32,8 @@ std::vector<std::string> modesOf(V4l2Device& device) {
   std::vector<std::string> modes;
   for (std::uint32_t fourcc : enumerateFormats(device)) {
     const auto output = outputFormatOf(fourcc, "");
-    const std::string as = output ? fmt::format("as {}", calib::pixelFormatName(*output))
-                                  : std::string("not readable");
+    const std::string as =
+        output ? fmt::format("as {}", pixelFormatName(*output)) : std::string("not readable");
     const auto sizes = enumerateFrameSizes(device, fourcc);
     if (sizes.empty()) modes.push_back(fmt::format("{} ({})", fourccName(fourcc), as));
     for (const V4l2FrameSize& s : sizes) {

@@ -21,7 +21,7 @@ std::string names(const std::vector<std::uint32_t>& fourccs) {
 
 std::expected<std::uint32_t, std::string> chooseFormat(V4l2Device& device,
                                                        const std::string& requested) {
-  if (!requested.empty() && !calib::parsePixelFormat(requested)) {
+  if (!requested.empty() && !parsePixelFormat(requested)) {
     return std::unexpected(fmt::format(
         "pixel format \"{}\" is not one of Mono8, Mono10, Mono12, Mono16, RGB8", requested));
   }

@@ -11,7 +11,7 @@ namespace {
 
 struct Readable {
   std::uint32_t fourcc;
-  calib::PixelFormat native;  // what it gives when nothing else is asked
+  PixelFormat native;  // what it gives when nothing else is asked
 };
 
 // Deepest first: the order "" (the deepest the camera offers) picks in.
@@ -41,16 +41,16 @@ std::string fourccName(std::uint32_t fourcc) {
   return name;
 }
 
-std::optional<calib::PixelFormat> outputFormatOf(std::uint32_t fourcc, std::string_view requested) {
+std::optional<PixelFormat> outputFormatOf(std::uint32_t fourcc, std::string_view requested) {
   const auto* entry = std::find_if(kReadable.begin(), kReadable.end(),
                                    [&](const Readable& r) { return r.fourcc == fourcc; });
   if (entry == kReadable.end()) return std::nullopt;
   if (requested.empty()) return entry->native;
-  const auto wanted = calib::parsePixelFormat(requested);
+  const auto wanted = parsePixelFormat(requested);
   if (!wanted) return std::nullopt;
   if (*wanted == entry->native) return entry->native;
   // YUYV's luma alone is Mono8.
-  if (fourcc == V4L2_PIX_FMT_YUYV && *wanted == calib::PixelFormat{1, 8}) return wanted;
+  if (fourcc == V4L2_PIX_FMT_YUYV && *wanted == PixelFormat{1, 8}) return wanted;
   return std::nullopt;
 }
 

@@ -1,5 +1,5 @@
 // The V4L2 pixel formats the backend reads, and what each becomes in calib's terms
-// (calib/core/raw_frame.h). Pure: no device.
+// (daemon/frames/raw_frame.h). Pure: no device.
 //
 //   native (fourcc)        bytes per pixel / group           pipeline format
 //   Y16  ('Y16 ')          2, little-endian                  Mono16
@@ -26,7 +26,7 @@
 #include <string_view>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras {
 
@@ -41,8 +41,8 @@ inline constexpr std::uint32_t kV4l2PixFmtY12P = std::uint32_t('Y') | (std::uint
 
 // The pipeline format `fourcc` gives when `requested` (a calib format name, "" = the native one)
 // is asked for, or nullopt when the backend cannot read it that way.
-[[nodiscard]] std::optional<calib::PixelFormat> outputFormatOf(std::uint32_t fourcc,
-                                                               std::string_view requested);
+[[nodiscard]] std::optional<PixelFormat> outputFormatOf(std::uint32_t fourcc,
+                                                        std::string_view requested);
 
 // Native formats that can give `requested`, best first ("" = every readable format, deepest
 // first). Empty when `requested` names no calib format.
@@ -60,7 +60,7 @@ struct V4l2Layout {
   int widthPx = 0;
   int heightPx = 0;
   std::size_t bytesPerLine = 0;  // >= packedRowBytes(fourcc, widthPx)
-  calib::PixelFormat output;     // outputFormatOf(fourcc, the request)
+  PixelFormat output;            // outputFormatOf(fourcc, the request)
 
   // The fewest bytes a buffer must hold: every row's pixels (the last row's padding may be cut).
   [[nodiscard]] std::size_t minimumBytes() const;

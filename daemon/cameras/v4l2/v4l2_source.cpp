@@ -15,8 +15,6 @@ namespace vem::cameras {
 
 namespace {
 
-using vemd::SourceErrorCause;
-
 constexpr std::size_t kMaxSpareBuffers = 8;
 constexpr std::string_view kSpecPrefix = "v4l2:";
 
@@ -31,7 +29,7 @@ bool sameLayout(const V4l2Layout& a, const V4l2Layout& b) {
 
 }  // namespace
 
-std::expected<std::unique_ptr<V4l2Source>, vemd::SourceError> V4l2Source::open(
+std::expected<std::unique_ptr<V4l2Source>, SourceError> V4l2Source::open(
     const std::string& target, V4l2Opener opener, const CameraSettings& settings) {
   std::unique_ptr<V4l2Source> source(new V4l2Source(target, std::move(opener), settings));
   if (auto connected = source->connect(); !connected) {
@@ -40,7 +38,7 @@ std::expected<std::unique_ptr<V4l2Source>, vemd::SourceError> V4l2Source::open(
   return source;
 }
 
-std::expected<std::unique_ptr<V4l2Source>, vemd::SourceError> V4l2Source::open(
+std::expected<std::unique_ptr<V4l2Source>, SourceError> V4l2Source::open(
     const std::string& pathOrName, const CameraSettings& settings) {
   std::string target = pathOrName;
   if (target.starts_with(kSpecPrefix)) target.erase(0, kSpecPrefix.size());
@@ -55,7 +53,7 @@ V4l2Source::V4l2Source(std::string target, V4l2Opener opener, const CameraSettin
 
 V4l2Source::~V4l2Source() { disconnect(); }
 
-vemd::SourceError V4l2Source::error(SourceErrorCause cause, const std::string& what) const {
+SourceError V4l2Source::error(SourceErrorCause cause, const std::string& what) const {
   return {cause, fmt::format("{}: {}", spec_, what)};
 }
 
@@ -104,7 +102,7 @@ void V4l2Source::disconnect() {
   device_.reset();
 }
 
-vemd::SourceError V4l2Source::lostDevice(const std::string& what, int errorCode) {
+SourceError V4l2Source::lostDevice(const std::string& what, int errorCode) {
   disconnect();
   const bool gone = errorCode == ENODEV || errorCode == ENXIO;
   return error(SourceErrorCause::NoDevice,
@@ -112,7 +110,7 @@ vemd::SourceError V4l2Source::lostDevice(const std::string& what, int errorCode)
                            errnoText(errorCode)));
 }
 
-std::expected<vemd::CapturedFrame, vemd::SourceError> V4l2Source::next() {
+std::expected<CapturedFrame, SourceError> V4l2Source::next() {
   if (!buffers_) {
     if (auto connected = connect(); !connected) {
       return std::unexpected(error(SourceErrorCause::NoDevice, connected.error()));
@@ -120,9 +118,9 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> V4l2Source::next() {
     ++counters_.reopened;
     sequence_.restart();
   }
-  const std::int64_t deadlineNs = vemd::monotonicNowNs() + settings_.timeoutMs * 1'000'000LL;
+  const std::int64_t deadlineNs = monotonicNowNs() + settings_.timeoutMs * 1'000'000LL;
   for (;;) {
-    const std::int64_t remainingNs = deadlineNs - vemd::monotonicNowNs();
+    const std::int64_t remainingNs = deadlineNs - monotonicNowNs();
     if (remainingNs <= 0) {
       return std::unexpected(error(SourceErrorCause::Timeout,
                                    fmt::format("no frame within {} ms", settings_.timeoutMs)));
@@ -149,7 +147,7 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> V4l2Source::next() {
   }
 }
 
-std::expected<vemd::CapturedFrame, vemd::SourceError> V4l2Source::take(const V4l2Dequeued& buffer) {
+std::expected<CapturedFrame, SourceError> V4l2Source::take(const V4l2Dequeued& buffer) {
   if (buffer.index >= buffers_->count()) return std::unexpected(lostDevice("VIDIOC_DQBUF", EINVAL));
   const std::uint64_t seq = sequence_.next(buffer.sequence);
   counters_.lost = sequence_.lost();
@@ -157,7 +155,7 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> V4l2Source::take(const V4l
   const std::size_t used = std::min<std::size_t>(buffer.bytesUsed, data.size());
   const bool corrupt = (buffer.flags & V4L2_BUF_FLAG_ERROR) != 0;
   const bool shortFrame = used < layout_.minimumBytes();
-  vemd::CapturedFrame out;
+  CapturedFrame out;
   if (!corrupt && !shortFrame) {
     if (!spareCodes_.empty()) {
       out.frame.codes = std::move(spareCodes_.back());
@@ -184,7 +182,7 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> V4l2Source::take(const V4l
   out.frame.exposureUs = exposureUs_;
   out.frame.gain = gain_;
   out.seq = seq;
-  out.arrivalNs = vemd::monotonicNowNs();
+  out.arrivalNs = monotonicNowNs();
   const bool monotonic =
       (buffer.flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC;
   out.captureTsNs = monotonic ? nsOf(buffer.timestamp) : out.arrivalNs;
@@ -193,7 +191,7 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> V4l2Source::take(const V4l
   return out;
 }
 
-void V4l2Source::recycle(vemd::CapturedFrame&& spent) {
+void V4l2Source::recycle(CapturedFrame&& spent) {
   if (spareCodes_.size() < kMaxSpareBuffers && spent.frame.codes.capacity() > 0) {
     spareCodes_.push_back(std::move(spent.frame.codes));
   }
@@ -219,8 +217,8 @@ std::expected<void, std::string> V4l2Source::setExposure(double exposureUs, doub
 
 const V4l2Counters& V4l2Source::counters() const { return counters_; }
 
-vemd::SourceDescription V4l2Source::describe() const {
-  vemd::SourceDescription d;
+SourceDescription V4l2Source::describe() const {
+  SourceDescription d;
   d.spec = spec_;
   d.cameraModel = identity_.card;
   d.cameraSerial = identity_.busInfo;

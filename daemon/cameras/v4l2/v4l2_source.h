@@ -1,5 +1,5 @@
 // V4l2Source: a Video4Linux2 camera (a UVC webcam or a 360 camera in UVC mode, a sensor behind a
-// V4L2 capture driver) as vemd's frame source (vemd/frame_source.h), `--source v4l2:/dev/videoN`
+// V4L2 capture driver) as vemd's frame source (frames/frame_source.h), `--source v4l2:/dev/videoN`
 // or `--source v4l2:NAME` (the card name VIDIOC_QUERYCAP gives).
 //
 // - Capture: memory-mapped streaming with max(settings.buffers, 4) buffers; next() polls the
@@ -39,7 +39,7 @@
 #include "cameras/v4l2/v4l2_formats.h"
 #include "cameras/v4l2/v4l2_queries.h"
 #include "cameras/v4l2/wake_event.h"
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::cameras {
 
@@ -54,22 +54,22 @@ struct V4l2Counters {
   std::uint64_t arrivalStamped = 0;  // frames whose driver timestamp was not CLOCK_MONOTONIC
 };
 
-class V4l2Source final : public vemd::FrameSource {
+class V4l2Source final : public FrameSource {
  public:
   // Opens `target` (a path or card name, as the opener understands it) through `opener`, sets the
   // format, controls and rate of `settings`, and starts streaming. NoDevice with one sentence
   // naming "v4l2:TARGET" when any step fails.
-  [[nodiscard]] static std::expected<std::unique_ptr<V4l2Source>, vemd::SourceError> open(
+  [[nodiscard]] static std::expected<std::unique_ptr<V4l2Source>, SourceError> open(
       const std::string& target, V4l2Opener opener, const CameraSettings& settings);
   // `pathOrName` as --source gives it, with or without "v4l2:": "/dev/video0" or a card name.
-  [[nodiscard]] static std::expected<std::unique_ptr<V4l2Source>, vemd::SourceError> open(
+  [[nodiscard]] static std::expected<std::unique_ptr<V4l2Source>, SourceError> open(
       const std::string& pathOrName, const CameraSettings& settings);
 
   ~V4l2Source() override;
 
-  [[nodiscard]] vemd::SourceDescription describe() const override;
-  [[nodiscard]] std::expected<vemd::CapturedFrame, vemd::SourceError> next() override;
-  void recycle(vemd::CapturedFrame&& spent) override;
+  [[nodiscard]] SourceDescription describe() const override;
+  [[nodiscard]] std::expected<CapturedFrame, SourceError> next() override;
+  void recycle(CapturedFrame&& spent) override;
   void interrupt() override;
   [[nodiscard]] std::expected<void, std::string> setExposure(double exposureUs,
                                                              double gain) override;
@@ -83,11 +83,9 @@ class V4l2Source final : public vemd::FrameSource {
 
   [[nodiscard]] std::expected<void, std::string> connect();
   void disconnect();
-  [[nodiscard]] vemd::SourceError lostDevice(const std::string& what, int error);
-  [[nodiscard]] std::expected<vemd::CapturedFrame, vemd::SourceError> take(
-      const V4l2Dequeued& buffer);
-  [[nodiscard]] vemd::SourceError error(vemd::SourceErrorCause cause,
-                                        const std::string& what) const;
+  [[nodiscard]] SourceError lostDevice(const std::string& what, int error);
+  [[nodiscard]] std::expected<CapturedFrame, SourceError> take(const V4l2Dequeued& buffer);
+  [[nodiscard]] SourceError error(SourceErrorCause cause, const std::string& what) const;
 
   std::string target_;
   std::string spec_;

@@ -95,8 +95,7 @@ void unpackRow(Row in, const V4l2Layout& layout, Out out) {
 
 }  // namespace
 
-void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout,
-                     calib::RawFrame& frame) {
+void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout, RawFrame& frame) {
   VEM_EXPECTS(data.size() >= layout.minimumBytes() &&
               layout.bytesPerLine >= packedRowBytes(layout.fourcc, layout.widthPx));
   frame.width = layout.widthPx;

@@ -1,4 +1,4 @@
-// Unpacking one V4L2 buffer into a RawFrame (calib/core/raw_frame.h): every native format of
+// Unpacking one V4L2 buffer into a RawFrame (daemon/frames/raw_frame.h): every native format of
 // v4l2_formats.h, rows read at the driver's bytesperline (padding skipped). Pure.
 //
 // - 16-bit containers (Y16, Y12, Y10): little-endian (Y16-BE: big-endian); Y12 and Y10 keep their
@@ -16,14 +16,13 @@
 #include <cstddef>
 #include <span>
 
-#include "calib/core/raw_frame.h"
 #include "cameras/v4l2/v4l2_formats.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras {
 
 // Reads `data` (at least layout.minimumBytes() bytes) into `frame`: size, format and codes set,
 // the codes' storage reused; exposure and gain untouched.
-void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout,
-                     calib::RawFrame& frame);
+void unpackV4l2Frame(std::span<const std::byte> data, const V4l2Layout& layout, RawFrame& frame);
 
 }  // namespace vem::cameras

@@ -84,7 +84,7 @@ int exportMap(const ExportOptions& o, const recording::RecordingReader& reader,
               const recording::RecordedFrame& recorded) {
   const auto calibration = recordedCalibration(reader);
   if (!calibration) return fail(calibration.error());
-  const calib::RawFrame& frame = recorded.frame;
+  const RawFrame& frame = recorded.frame;
   const int height = o.layout == MapLayout::Hemisphere ? o.width / 4 : o.width / 2;
   if (height < 1) return fail(fmt::format("--width {} leaves no rows for the map", o.width));
   const calib::PolarRemap remap =
@@ -107,7 +107,7 @@ int exportMap(const ExportOptions& o, const recording::RecordingReader& reader,
 }
 
 int exportRaw(const ExportOptions& o, const recording::RecordedFrame& recorded) {
-  const calib::RawFrame& frame = recorded.frame;
+  const RawFrame& frame = recorded.frame;
   if (auto saved = calib::io::saveRawFrame(frame, o.out); !saved) {
     return fail(saved.error().message);
   }
@@ -115,7 +115,7 @@ int exportRaw(const ExportOptions& o, const recording::RecordedFrame& recorded) 
       "wrote {}: frame {} ({:.3f} s) as the sensor's codes, {} x {} {} (exposure {:g} us, gain "
       "{:g})\n",
       o.out, recorded.seq, double(recorded.captureTsNs) * 1e-9, frame.width, frame.height,
-      calib::pixelFormatName(frame.format), frame.exposureUs, frame.gain);
+      pixelFormatName(frame.format), frame.exposureUs, frame.gain);
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 

@@ -150,7 +150,7 @@ class Importer {
   const ImportOptions& options_;
   synth::SyntheticCamera camera_;
   PendingRecording& out_;
-  calib::RawFrame frame_;
+  RawFrame frame_;
   std::uint64_t seq_ = 0;
 };
 
@@ -177,7 +177,7 @@ int runImport(const ImportOptions& o) {
   std::cout << fmt::format(
       "wrote {}: {} frames from {} files at {:g} Hz through {} ({} x {} {}), {} bytes\n", o.out,
       importer.frames(), inputs->size(), o.rateHz, id.model, id.sensorWidthPx, id.sensorHeightPx,
-      calib::pixelFormatName(id.pixelFormat), pending->bytesWritten());
+      pixelFormatName(id.pixelFormat), pending->bytesWritten());
   std::cout << fmt::format("next: vemtool export {} --frame 0 --out frame-0.exr\n", o.out);
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -62,7 +62,7 @@ nlohmann::ordered_json summaryJson(const std::string& file, const recording::Rec
   j["camera"] = {{"model", h.cameraModel}, {"serial", h.cameraSerial}};
   j["sensor"] = {{"width_px", h.sensorWidthPx},
                  {"height_px", h.sensorHeightPx},
-                 {"pixel_format", calib::pixelFormatName(h.pixelFormat)}};
+                 {"pixel_format", pixelFormatName(h.pixelFormat)}};
   j["nominal_rate_hz"] = h.nominalRateHz;
   j["calibration_toml_bytes"] = h.calibrationToml.size();
   j["created_unix_ns"] = h.createdUnixNs;
@@ -98,7 +98,7 @@ std::string summaryText(const std::string& file, const recording::RecordingSumma
                               h.formatVersion, s.fileBytes);
   t += fmt::format("camera:      {} (serial {}), {} x {} {}, nominal {} Hz\n",
                    printable(h.cameraModel), printable(h.cameraSerial), h.sensorWidthPx,
-                   h.sensorHeightPx, calib::pixelFormatName(h.pixelFormat), h.nominalRateHz);
+                   h.sensorHeightPx, pixelFormatName(h.pixelFormat), h.nominalRateHz);
   t += fmt::format("calibration: {}\n",
                    h.calibrationToml.empty()
                        ? std::string("none")

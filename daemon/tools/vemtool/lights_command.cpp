@@ -10,12 +10,12 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "util/cli_value_names.h"
 #include "core/default_pattern.h"
 #include "core/light_generator.h"
 #include "core/sampling_tables.h"
-#include "light_json.h"
 #include "mapio/map_file.h"
+#include "util/cli_value_names.h"
+#include "vemd/sinks/light_json.h"
 
 namespace vem::tool {
 namespace {
@@ -44,7 +44,8 @@ int runLights(const LightsOptions& o) {
   const LightSet lights =
       generateLights(*map, tables, defaultSamplingPattern(map->layout).first(o.count), o.sampler);
   const nlohmann::ordered_json frame =
-      o.clusterQ ? clusteredFrameJson(lights, *o.clusterQ, map->layout, 0) : frameJson(lights, 0);
+      o.clusterQ ? vemd::clusteredFrameJson(lights, *o.clusterQ, map->layout, 0)
+                 : vemd::frameJson(lights, 0);
   std::cout << (o.prettyJson ? frame.dump(2) : frame.dump()) << '\n';
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -22,9 +22,9 @@
 
 #include "client/stream_client.h"
 #include "commands.h"
-#include "util/cli_value_names.h"
-#include "light_json.h"
 #include "proto/stream_protocol.h"
+#include "util/cli_value_names.h"
+#include "vemd/sinks/light_json.h"
 
 namespace vem::tool {
 namespace {
@@ -51,7 +51,7 @@ double roundedMs(double ms) { return std::round(ms * 1000.0) / 1000.0; }
 
 nlohmann::ordered_json lightFrameJson(const client::Received<client::LightFrame>& received) {
   const client::LightFrame& frame = received.frame;
-  nlohmann::ordered_json lights = frameJson(frame.lights, frame.seq);
+  nlohmann::ordered_json lights = vemd::frameJson(frame.lights, frame.seq);
   return {{"seq", frame.seq},
           {"lights_seq", frame.lightsSeq},
           {"capture_ts_ns", frame.captureTsNs},

@@ -72,7 +72,7 @@ int runSynth(SynthOptions o) {
   if (!pending) return fail(pending.error());
 
   synth::SyntheticCamera synthetic(*camera, {o.samples, {o.noiseCode, 0.0, o.seed}});
-  calib::RawFrame frame;
+  RawFrame frame;
   std::chrono::steady_clock::duration rendering{};
   for (int k = 0; k < o.frames; ++k) {
     const auto seq = std::uint64_t(k);
@@ -94,7 +94,7 @@ int runSynth(SynthOptions o) {
       "{} bytes; {:.1f} ms per frame to render\n",
       o.out, o.frames, (*scene)->name(), *o.rateHz, o.startS,
       o.startS + double(o.frames - 1) / *o.rateHz, id.model, id.sensorWidthPx, id.sensorHeightPx,
-      calib::pixelFormatName(id.pixelFormat), pending->bytesWritten(), msPerFrame);
+      pixelFormatName(id.pixelFormat), pending->bytesWritten(), msPerFrame);
   std::cout << fmt::format("next: vemtool export {} --frame 0 --out frame-0.exr\n", o.out);
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -133,7 +133,7 @@ std::string PendingRecording::aboutOut(std::string message) const {
 
 std::expected<void, std::string> PendingRecording::append(std::uint64_t seq,
                                                           std::int64_t timestampNs,
-                                                          const calib::RawFrame& frame) {
+                                                          const RawFrame& frame) {
   if (auto appended = writer_->append(seq, timestampNs, frame); !appended) {
     return std::unexpected(aboutOut(appended.error().message));
   }

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "calib/core/camera_calibration.h"
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 #include "recording/recording_header.h"
 #include "recording/recording_writer.h"
 
@@ -43,7 +43,7 @@ class PendingRecording {
   ~PendingRecording();  // removes the temporary file unless committed
 
   [[nodiscard]] std::expected<void, std::string> append(std::uint64_t seq, std::int64_t timestampNs,
-                                                        const calib::RawFrame& frame);
+                                                        const RawFrame& frame);
   // Closes the recording and puts it at `out`.
   [[nodiscard]] std::expected<void, std::string> commit();
   [[nodiscard]] std::uint64_t bytesWritten() const;

@@ -8,19 +8,18 @@
 #include <cstring>
 #include <utility>
 
-#include "tools/vemtool/light_json.h"
+#include "frames/published_lights.h"
 #include "util/contract.h"
 #include "util/write_all.h"
-#include "vemd/sinks/published_lights.h"
+#include "vemd/sinks/light_json.h"
 
 namespace vem::vemd {
 
 nlohmann::ordered_json lightsLineJson(const ProcessedFrame& frame, std::uint64_t line) {
   const PublishedLights published = publishedLights(frame);
   const nlohmann::ordered_json lights =
-      published.clustering
-          ? tool::clusteredFrameJson(*published.lights, *published.clustering, line)
-          : tool::frameJson(*published.lights, line);
+      published.clustering ? clusteredFrameJson(*published.lights, *published.clustering, line)
+                           : frameJson(*published.lights, line);
   nlohmann::ordered_json out;
   out["frame"] = line;
   out["seq"] = frame.captured->seq;

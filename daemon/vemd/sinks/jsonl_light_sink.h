@@ -1,14 +1,14 @@
 // JsonlLightSink: appends one JSON object per processed frame to a file, one line each, flushed
 // (written to the kernel with one write()) per line, so `tail -f` and a crash both see whole lines.
 //
-// A line is the `vemtool lights` object (docs/conventions.md, tools/vemtool/light_json.h) with
+// A line is the `vemtool lights` object (docs/conventions.md, light_json.h) with
 // vemd's frame identity added after "frame":
 //
 //   {"frame":F,"seq":S,"capture_ts_ns":T,"filtered":true,"filtered_seq":S2,"count":N,
 //    "lights":[{"id":K,"dir":[x,y,z],"rgb":[r,g,b]},...]}
 //
 // - "frame" counts the lines this sink wrote (0, 1, ...); "seq" and "capture_ts_ns" are the
-//   captured frame's (captured_frame.h: the source's sequence number, its clock in ns).
+//   captured frame's (frames/captured_frame.h: the source's sequence number, its clock in ns).
 // - The lights are the published ones (published_lights.h): the temporal filter's output when the
 //   frame has one ("filtered":true, and "filtered_seq" the frame they stand for), else the frame's
 //   own lights ("filtered":false).
@@ -30,8 +30,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "frames/sink.h"
 #include "util/unique_fd.h"
-#include "vemd/sink.h"
 
 namespace vem::vemd {
 

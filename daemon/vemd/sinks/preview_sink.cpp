@@ -9,9 +9,9 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "frames/published_lights.h"
 #include "util/atomic_file.h"
 #include "util/contract.h"
-#include "vemd/sinks/published_lights.h"
 
 namespace vem::vemd {
 

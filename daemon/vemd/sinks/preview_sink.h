@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "vemd/sink.h"
+#include "frames/sink.h"
 #include "vemd/sinks/preview_image.h"
 
 namespace vem::vemd {

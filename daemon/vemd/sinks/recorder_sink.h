@@ -19,8 +19,8 @@
 #include <optional>
 #include <string>
 
+#include "frames/sink.h"
 #include "recording/recording_writer.h"
-#include "vemd/sink.h"
 #include "vemd/sinks/recording_context.h"
 
 namespace vem::vemd {

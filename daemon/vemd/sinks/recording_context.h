@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 #include "recording/recording_header.h"
 
 namespace vem::vemd {
@@ -17,7 +17,7 @@ namespace vem::vemd {
 struct RecordingContext {
   std::string cameraModel;
   std::string cameraSerial;
-  calib::PixelFormat pixelFormat;
+  PixelFormat pixelFormat;
   int widthPx = 0;
   int heightPx = 0;
   double nominalRateHz = 0.0;

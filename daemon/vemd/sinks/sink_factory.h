@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "vemd/sink.h"
+#include "frames/sink.h"
 #include "vemd/sinks/recording_context.h"
 
 namespace vem::vemd {

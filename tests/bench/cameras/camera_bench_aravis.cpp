@@ -15,13 +15,14 @@
 
 #include <fmt/format.h>
 
-#include "calib/io/camera_file.h"
 #include "bench/cameras/camera_latency.h"
+#include "calib/io/camera_file.h"
 #include "cameras/aravis/aravis_source.h"
 #include "support/test_cameras.h"
 #include "synth/sky_scene.h"
 #include "synth/synthetic_camera.h"
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 
 namespace vem::bench {
 namespace {
@@ -146,8 +147,8 @@ LatencyRun benchAravisFakeCamera(int frames) {
     run.error = source.error().message;
     return run;
   }
-  auto pipeline = vemd::Pipeline::create((*source)->describe().calibrationToml, "aravis bench",
-                                         cameraBenchProcessing());
+  auto pipeline = vemd::pipelineFromCameraFile((*source)->describe().calibrationToml,
+                                               "aravis bench", cameraBenchProcessing());
   if (!pipeline) {
     run.error = pipeline.error();
     return run;

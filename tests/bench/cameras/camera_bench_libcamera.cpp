@@ -15,6 +15,7 @@
 #include "fake_libcamera_port.h"
 #include "synth/default_camera.h"
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 
 namespace vem::bench {
 
@@ -63,7 +64,8 @@ LatencyRun benchLibcameraFakeCamera(int frames) {
     run.error = source.error().message;
     return run;
   }
-  auto pipeline = vemd::Pipeline::create(toml, "the example camera as Mono16", cameraBenchProcessing());
+  auto pipeline =
+      vemd::pipelineFromCameraFile(toml, "the example camera as Mono16", cameraBenchProcessing());
   if (!pipeline) {
     run.error = pipeline.error();
     return run;

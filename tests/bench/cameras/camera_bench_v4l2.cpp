@@ -18,6 +18,7 @@
 #include "synth/scene_factory.h"
 #include "synth/synthetic_camera.h"
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 
 namespace vem::bench {
 
@@ -35,7 +36,7 @@ std::expected<calib::CameraCalibration, std::string> monoExampleCamera() {
   auto camera = calib::io::parseCameraFile(std::string(synth::exampleCameraToml()),
                                            std::string(synth::kExampleCameraSource));
   if (!camera) return std::unexpected(camera.error().message);
-  camera->camera.pixelFormat = calib::PixelFormat{1, 16};
+  camera->camera.pixelFormat = vem::PixelFormat{1, 16};
   camera->camera.model = "Fake V4L2 Camera";
   return *camera;
 }
@@ -46,7 +47,7 @@ std::vector<std::vector<std::uint8_t>> skyBuffers(const calib::CameraCalibration
   auto scene = synth::makeScene("sky", {});
   synth::SyntheticCamera renderer(camera);
   std::vector<std::vector<std::uint8_t>> buffers;
-  calib::RawFrame frame;
+  vem::RawFrame frame;
   for (int i = 0; i < kDistinctFrames; ++i) {
     renderer.render((*scene)->at(double(i) / 30.0), std::uint64_t(i), frame);
     buffers.push_back(testing::encodeFakeFrame(frame.codes, format));
@@ -90,8 +91,9 @@ LatencyRun benchV4l2FakeDevice(int frames) {
     run.error = source.error().message;
     return run;
   }
-  auto pipeline = vemd::Pipeline::create((*source)->describe().calibrationToml,
-                                         "the example camera as Mono16", cameraBenchProcessing());
+  auto pipeline =
+      vemd::pipelineFromCameraFile((*source)->describe().calibrationToml,
+                                   "the example camera as Mono16", cameraBenchProcessing());
   if (!pipeline) {
     run.error = pipeline.error();
     return run;

@@ -5,8 +5,8 @@
 
 namespace vem::bench {
 
-vemd::ProcessingOptions cameraBenchProcessing() {
-  vemd::ProcessingOptions options;
+vem::ProcessingOptions cameraBenchProcessing() {
+  vem::ProcessingOptions options;
   options.mapWidth = 1024;
   options.mapHeight = 256;
   options.lightCount = 1024;
@@ -15,7 +15,7 @@ vemd::ProcessingOptions cameraBenchProcessing() {
   return options;
 }
 
-void measureFrameToLights(vemd::FrameSource& source, vemd::Pipeline& pipeline, int warmUpFrames,
+void measureFrameToLights(vem::FrameSource& source, vemd::Pipeline& pipeline, int warmUpFrames,
                           int frames, LatencyRun& run) {
   constexpr int kMaxErrorsInARow = 20;
   run.latencyUs.reserve(run.latencyUs.size() + std::size_t(std::max(frames, 0)));
@@ -23,7 +23,7 @@ void measureFrameToLights(vemd::FrameSource& source, vemd::Pipeline& pipeline, i
   for (int taken = 0; taken < warmUpFrames + frames;) {
     auto captured = source.next();
     if (!captured) {
-      if (captured.error().cause == vemd::SourceErrorCause::NoDevice ||
+      if (captured.error().cause == vem::SourceErrorCause::NoDevice ||
           ++errorsInARow >= kMaxErrorsInARow) {
         run.error = captured.error().message;
         return;
@@ -36,7 +36,7 @@ void measureFrameToLights(vemd::FrameSource& source, vemd::Pipeline& pipeline, i
       return;
     }
     (void)pipeline.process(*captured);
-    const std::int64_t readyNs = vemd::monotonicNowNs();
+    const std::int64_t readyNs = vem::monotonicNowNs();
     if (taken >= warmUpFrames) run.latencyUs.push_back(double(readyNs - captured->arrivalNs) / 1e3);
     source.recycle(std::move(*captured));
     ++taken;

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 #include "vemd/pipeline.h"
 
 namespace vem::bench {
@@ -28,13 +28,13 @@ struct LatencyRun {
 
 // The pipeline every camera path is measured with: 1024 x 256 polar map, 1024 lights, Paper9
 // filter, no clustering.
-[[nodiscard]] vemd::ProcessingOptions cameraBenchProcessing();
+[[nodiscard]] vem::ProcessingOptions cameraBenchProcessing();
 
 // The measured loop all paths share: takes warmUpFrames + frames frames from `source`, makes lights
 // with `pipeline` on this thread, recycles each frame and appends the latency of the last `frames`
 // to run.latencyUs. Stops with run.error set at a lost device (NoDevice), after 20 source errors in
 // a row, or at a frame the pipeline refuses.
-void measureFrameToLights(vemd::FrameSource& source, vemd::Pipeline& pipeline, int warmUpFrames,
+void measureFrameToLights(vem::FrameSource& source, vemd::Pipeline& pipeline, int warmUpFrames,
                           int frames, LatencyRun& run);
 
 [[nodiscard]] LatencyRun benchAravisFakeCamera(int frames);     // cameras/camera_bench_aravis.cpp

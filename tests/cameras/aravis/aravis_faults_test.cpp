@@ -12,7 +12,7 @@ namespace vem::testing {
 namespace {
 
 using cameras::AravisSource;
-using vemd::SourceErrorCause;
+using vem::SourceErrorCause;
 
 TEST(AravisFaults, KilledCameraGivesNoDeviceAndANewCameraOnTheAddressResumesTheStream) {
   const SkyFrames sky = renderSkyFrames(64, 64, {1, 16}, 3);
@@ -32,7 +32,7 @@ TEST(AravisFaults, KilledCameraGivesNoDeviceAndANewCameraOnTheAddressResumesTheS
   }
 
   fake.reset();  // the camera is gone: no frames, no answers on 127.0.0.1:3956
-  std::optional<vemd::SourceError> lost;
+  std::optional<vem::SourceError> lost;
   for (int i = 0; i < 10 && !lost; ++i) {
     auto got = (*source)->next();
     if (got) {
@@ -55,7 +55,7 @@ TEST(AravisFaults, KilledCameraGivesNoDeviceAndANewCameraOnTheAddressResumesTheS
   fake = FakeGvCamera::start("VEM20", genicam);
   ASSERT_TRUE(fake);
   fake->serve(sky.frames);
-  std::optional<vemd::CapturedFrame> resumed;
+  std::optional<vem::CapturedFrame> resumed;
   for (int i = 0; i < 10 && !resumed; ++i) {
     if (auto got = (*source)->next()) resumed = std::move(*got);
   }

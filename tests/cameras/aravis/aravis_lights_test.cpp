@@ -13,12 +13,13 @@
 #include "fake_gv_camera.h"
 #include "sky_frames.h"
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 
 namespace vem::testing {
 namespace {
 
-vemd::ProcessingOptions smallOptions() {
-  vemd::ProcessingOptions o;
+vem::ProcessingOptions smallOptions() {
+  vem::ProcessingOptions o;
   o.mapWidth = 256;
   o.mapHeight = 64;
   o.lightCount = 256;
@@ -61,8 +62,8 @@ TEST(AravisLights, PipelineOnCameraFramesEqualsPipelineOnTheDrawnFramesAndFindsT
   auto source = cameras::AravisSource::open(kFakeAddress, settings);
   ASSERT_TRUE(source) << source.error().message;
   auto viaCamera =
-      vemd::Pipeline::create((*source)->describe().calibrationToml, "camera", smallOptions());
-  auto direct = vemd::Pipeline::create(sky.cameraToml, "direct", smallOptions());
+      vemd::pipelineFromCameraFile((*source)->describe().calibrationToml, "camera", smallOptions());
+  auto direct = vemd::pipelineFromCameraFile(sky.cameraToml, "direct", smallOptions());
   ASSERT_TRUE(viaCamera) << viaCamera.error();
   ASSERT_TRUE(direct) << direct.error();
 
@@ -72,7 +73,7 @@ TEST(AravisLights, PipelineOnCameraFramesEqualsPipelineOnTheDrawnFramesAndFindsT
     ASSERT_FALSE(viaCamera->frameProblem(got->frame)) << *viaCamera->frameProblem(got->frame);
     const int index = drawnIndex(got->frame, sky.frames);
     ASSERT_GE(index, 0);
-    vemd::CapturedFrame drawn = *got;
+    vem::CapturedFrame drawn = *got;
     drawn.frame = sky.frames[std::size_t(index)];
     drawn.frame.exposureUs = got->frame.exposureUs;
     drawn.frame.gain = got->frame.gain;

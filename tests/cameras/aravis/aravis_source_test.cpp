@@ -18,7 +18,7 @@ namespace vem::testing {
 namespace {
 
 using cameras::AravisSource;
-using vemd::SourceErrorCause;
+using vem::SourceErrorCause;
 
 struct FormatCase {
   const char* pipelineFormat;  // what vemd asks for
@@ -29,7 +29,7 @@ class AravisFormats : public ::testing::TestWithParam<FormatCase> {};
 
 TEST_P(AravisFormats, FramesCarryTheDrawnPixelsInOrderWithTheirMetadata) {
   const FormatCase c = GetParam();
-  const calib::PixelFormat format = *calib::parsePixelFormat(c.pipelineFormat);
+  const vem::PixelFormat format = *vem::parsePixelFormat(c.pipelineFormat);
   const SkyFrames sky = renderSkyFrames(320, 256, format, 3);
   auto fake = FakeGvCamera::start("VEM01", writeFakeGenicam({"BayerRG8", c.nativeFormat}));
   ASSERT_TRUE(fake);
@@ -41,11 +41,11 @@ TEST_P(AravisFormats, FramesCarryTheDrawnPixelsInOrderWithTheirMetadata) {
   ASSERT_TRUE(source) << source.error().message;
 
   int previousIndex = -1;
-  vemd::CapturedFrame previous;
+  vem::CapturedFrame previous;
   for (int i = 0; i < 10; ++i) {
     auto got = nextFrame(**source);
     ASSERT_TRUE(got) << got.error().message;
-    const calib::RawFrame& frame = got->frame;
+    const vem::RawFrame& frame = got->frame;
     ASSERT_EQ(frame.format, format);
     ASSERT_EQ(frame.width, 320);
     ASSERT_EQ(frame.height, 256);
@@ -86,13 +86,13 @@ TEST(AravisSource, DescribeNamesTheCameraItsModeAndRate) {
   settings.calibrationToml = "# the camera file";
   auto source = AravisSource::open(kFakeAddress, settings);
   ASSERT_TRUE(source) << source.error().message;
-  const vemd::SourceDescription d = (*source)->describe();
+  const vem::SourceDescription d = (*source)->describe();
   EXPECT_EQ(d.spec, "aravis:127.0.0.1");
   EXPECT_EQ(d.cameraModel, "Aravis Fake");
   EXPECT_EQ(d.cameraSerial, "VEM02");
   EXPECT_EQ(d.sensorWidthPx, 320);
   EXPECT_EQ(d.sensorHeightPx, 256);
-  EXPECT_EQ(d.pixelFormat, (calib::PixelFormat{1, 16}));  // "" picks the deepest offered
+  EXPECT_EQ(d.pixelFormat, (vem::PixelFormat{1, 16}));  // "" picks the deepest offered
   EXPECT_EQ(d.calibrationToml, "# the camera file");
   EXPECT_NEAR(d.nominalRateHz, 50.0, 1e-9);
   EXPECT_TRUE(d.liveClock);

@@ -29,12 +29,12 @@ inline cameras::CameraSettings fakeSettings(const std::string& pixelFormat, int 
 
 // The next frame, riding over up to `attempts` - 1 Timeout or BadFrame errors (the first frames
 // after a start); the last error otherwise.
-inline std::expected<vemd::CapturedFrame, vemd::SourceError> nextFrame(vemd::FrameSource& source,
-                                                                       int attempts = 5) {
-  std::expected<vemd::CapturedFrame, vemd::SourceError> got = source.next();
+inline std::expected<vem::CapturedFrame, vem::SourceError> nextFrame(vem::FrameSource& source,
+                                                                     int attempts = 5) {
+  std::expected<vem::CapturedFrame, vem::SourceError> got = source.next();
   for (int i = 1; i < attempts && !got &&
-                  (got.error().cause == vemd::SourceErrorCause::Timeout ||
-                   got.error().cause == vemd::SourceErrorCause::BadFrame);
+                  (got.error().cause == vem::SourceErrorCause::Timeout ||
+                   got.error().cause == vem::SourceErrorCause::BadFrame);
        ++i) {
     got = source.next();
   }
@@ -42,7 +42,7 @@ inline std::expected<vemd::CapturedFrame, vemd::SourceError> nextFrame(vemd::Fra
 }
 
 // Index of the drawn frame whose codes `frame` has exactly, or -1.
-inline int drawnIndex(const calib::RawFrame& frame, const std::vector<calib::RawFrame>& drawn) {
+inline int drawnIndex(const vem::RawFrame& frame, const std::vector<vem::RawFrame>& drawn) {
   for (std::size_t i = 0; i < drawn.size(); ++i) {
     if (drawn[i].width == frame.width && drawn[i].height == frame.height &&
         drawn[i].codes == frame.codes) {

@@ -55,7 +55,7 @@ FakeGvCamera::~FakeGvCamera() {
   if (camera_ != nullptr) g_object_unref(camera_);
 }
 
-void FakeGvCamera::serve(std::vector<calib::RawFrame> frames) {
+void FakeGvCamera::serve(std::vector<vem::RawFrame> frames) {
   std::lock_guard lock(mutex_);
   frames_ = std::move(frames);
 }
@@ -70,7 +70,7 @@ void FakeGvCamera::fill(void* buffer, void* self, std::uint32_t exposureUs, std:
   std::lock_guard lock(fake->mutex_);
   if (fake->frames_.empty() || native == nullptr) return;
   const std::uint64_t n = fake->drawn_.fetch_add(1);
-  const calib::RawFrame& frame = fake->frames_[n % fake->frames_.size()];
+  const vem::RawFrame& frame = fake->frames_[n % fake->frames_.size()];
   if (arv_buffer_get_image_width(arvBuffer) != frame.width ||
       arv_buffer_get_image_height(arvBuffer) != frame.height) {
     return;  // the test set another size than its frames': they arrive blank

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 struct _ArvGvFakeCamera;
 
@@ -33,7 +33,7 @@ class FakeGvCamera {
   FakeGvCamera(const FakeGvCamera&) = delete;
   FakeGvCamera& operator=(const FakeGvCamera&) = delete;
 
-  void serve(std::vector<calib::RawFrame> frames);
+  void serve(std::vector<vem::RawFrame> frames);
   [[nodiscard]] std::uint64_t framesDrawn() const { return drawn_.load(); }
   // The raw register values the last fill saw: exposure in us, gain register (1/100 dB in the
   // test description).
@@ -47,7 +47,7 @@ class FakeGvCamera {
 
   _ArvGvFakeCamera* camera_ = nullptr;
   std::mutex mutex_;
-  std::vector<calib::RawFrame> frames_;
+  std::vector<vem::RawFrame> frames_;
   std::atomic<std::uint64_t> drawn_{0};
   std::atomic<std::uint32_t> exposure_{0};
   std::atomic<std::uint32_t> gain_{0};

@@ -14,7 +14,7 @@ namespace {
 constexpr double kSecondsBetweenFrames = 4.0;
 
 // The 12-bit log truth stretched (or squeezed) to `bits`.
-calib::CameraCalibration testCamera(int width, int height, calib::PixelFormat format) {
+calib::CameraCalibration testCamera(int width, int height, vem::PixelFormat format) {
   calib::CameraCalibration camera = cameraTruth(width, height, format.channels);
   camera.camera.pixelFormat = format;
   const double scale = std::ldexp(1.0, format.bits - 12);
@@ -29,7 +29,7 @@ calib::CameraCalibration testCamera(int width, int height, calib::PixelFormat fo
 
 }  // namespace
 
-SkyFrames renderSkyFrames(int widthPx, int heightPx, calib::PixelFormat format, int count) {
+SkyFrames renderSkyFrames(int widthPx, int heightPx, vem::PixelFormat format, int count) {
   const calib::CameraCalibration camera = testCamera(widthPx, heightPx, format);
   SkyFrames out;
   out.cameraToml = calib::io::formatCameraFile(camera);

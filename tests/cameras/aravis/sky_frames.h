@@ -9,17 +9,17 @@
 
 #include <glm/vec3.hpp>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 namespace vem::testing {
 
 struct SkyFrames {
   std::string cameraToml;               // the camera file of the simulated camera
-  std::vector<calib::RawFrame> frames;  // scene times 0, 4, 8, ... s: every frame differs
+  std::vector<vem::RawFrame> frames;    // scene times 0, 4, 8, ... s: every frame differs
   std::vector<glm::dvec3> sunDirWorld;  // per frame, unit
 };
 
-[[nodiscard]] SkyFrames renderSkyFrames(int widthPx, int heightPx, calib::PixelFormat format,
+[[nodiscard]] SkyFrames renderSkyFrames(int widthPx, int heightPx, vem::PixelFormat format,
                                         int count);
 
 }  // namespace vem::testing

@@ -19,6 +19,7 @@
 #include "synth/sky_scene.h"
 #include "synth/synthetic_camera.h"
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 
 namespace vem::cameras {
 namespace {
@@ -27,8 +28,8 @@ constexpr int kWidth = 320;
 constexpr int kHeight = 256;
 constexpr double kRateHz = 30.0;
 
-vemd::ProcessingOptions smallMaps() {
-  vemd::ProcessingOptions o;
+vem::ProcessingOptions smallMaps() {
+  vem::ProcessingOptions o;
   o.mapWidth = 512;
   o.mapHeight = 128;
   o.lightCount = 256;
@@ -61,17 +62,17 @@ BracketRun bracketRun(std::shared_ptr<const synth::SyntheticScene> scene, double
 }
 
 // The scene time of a merged frame: its captureTsNs on the fake camera's clock.
-double sceneTimeS(const testing::LdrFakeCamera& camera, const vemd::CapturedFrame& frame) {
+double sceneTimeS(const testing::LdrFakeCamera& camera, const vem::CapturedFrame& frame) {
   return double(frame.captureTsNs - camera.captureTsNs(0)) / 1e9;
 }
 
 // What an ideal HDR camera (the virtual sensor itself, noiseless) delivers of the scene at t.
-vemd::CapturedFrame idealFrame(const BracketRun& run, double timeS) {
+vem::CapturedFrame idealFrame(const BracketRun& run, double timeS) {
   auto calibration =
       calib::io::parseCameraFile(run.source->describe().calibrationToml, "the virtual camera");
   EXPECT_TRUE(calibration.has_value());
   synth::SyntheticCamera ideal(*calibration, synth::SyntheticCameraOptions{3, {}});
-  vemd::CapturedFrame out;
+  vem::CapturedFrame out;
   out.frame = ideal.render(run.scene->at(timeS), 0);
   out.frame.exposureUs = 1.0;
   return out;
@@ -114,23 +115,23 @@ TEST(BracketingPipeline, LightsOfTheMergedSkyMatchAnIdealHdrCameraAndPointAtTheS
   sky.arc.speedDegPerS = 0.0;
   BracketRun run = bracketRun(std::make_shared<synth::SkyScene>(sky), 1e5, settings);
   ASSERT_TRUE(run.source);
-  const vemd::SourceDescription d = run.source->describe();
-  auto pipeline = vemd::Pipeline::create(d.calibrationToml, d.spec, smallMaps());
+  const vem::SourceDescription d = run.source->describe();
+  auto pipeline = vemd::pipelineFromCameraFile(d.calibrationToml, d.spec, smallMaps());
   ASSERT_TRUE(pipeline.has_value()) << pipeline.error();
-  auto idealPipeline = vemd::Pipeline::create(d.calibrationToml, "ideal", smallMaps());
+  auto idealPipeline = vemd::pipelineFromCameraFile(d.calibrationToml, "ideal", smallMaps());
   ASSERT_TRUE(idealPipeline.has_value());
 
   for (int group = 0; group < 2; ++group) {
     auto merged = run.source->next();
     ASSERT_TRUE(merged.has_value()) << merged.error().message;
     ASSERT_EQ(pipeline->frameProblem(merged->frame), std::nullopt);
-    const vemd::ProcessedFrame& got = pipeline->process(*merged);
+    const vem::ProcessedFrame& got = pipeline->process(*merged);
     const double lumSr = got.lights.luminanceSr;
     const glm::dvec3 brightest = brightestDirection(*got.polar);
 
     const double timeS = sceneTimeS(*run.camera, *merged);
-    const vemd::CapturedFrame truthFrame = idealFrame(run, timeS);
-    const vemd::ProcessedFrame& truth = idealPipeline->process(truthFrame);
+    const vem::CapturedFrame truthFrame = idealFrame(run, timeS);
+    const vem::ProcessedFrame& truth = idealPipeline->process(truthFrame);
     const glm::dvec3 sun = *run.scene->at(timeS).sunDirWorld;
     const double powerError = lumSr / truth.lights.luminanceSr - 1.0;
     std::printf(
@@ -146,7 +147,7 @@ TEST(BracketingPipeline, LightsOfTheMergedSkyMatchAnIdealHdrCameraAndPointAtTheS
 }
 
 // Mean |ln(L / L_truth)| over samples both read above 0 and below saturation.
-double meanLogError(const calib::RawFrame& merged, const calib::RawFrame& truth,
+double meanLogError(const vem::RawFrame& merged, const vem::RawFrame& truth,
                     const calib::PhotometricCalibration& response) {
   double sum = 0.0;
   std::size_t n = 0;
@@ -218,12 +219,12 @@ TEST(BracketingPipeline, AMovingSunIsMergedWhereTheShortestExposureSawIt) {
     sky.arc.speedDegPerS = speed;
     BracketRun run = bracketRun(std::make_shared<synth::SkyScene>(sky), 1e5, settings);
     ASSERT_TRUE(run.source);
-    const vemd::SourceDescription d = run.source->describe();
-    auto pipeline = vemd::Pipeline::create(d.calibrationToml, d.spec, smallMaps());
+    const vem::SourceDescription d = run.source->describe();
+    auto pipeline = vemd::pipelineFromCameraFile(d.calibrationToml, d.spec, smallMaps());
     ASSERT_TRUE(pipeline.has_value());
     auto merged = run.source->next();
     ASSERT_TRUE(merged.has_value());
-    const vemd::ProcessedFrame& got = pipeline->process(*merged);
+    const vem::ProcessedFrame& got = pipeline->process(*merged);
     const double middleS = sceneTimeS(*run.camera, *merged);
     const double firstS = middleS - double(settings.count / 2) / kRateHz;
     const glm::dvec3 brightest = brightestDirection(*got.polar);

@@ -77,7 +77,7 @@ TEST(BracketingSource, GroupsByReportedExposureWhenTheCameraAppliesRequestsTwoFr
     const std::uint64_t middle = 3 + 3 * group;
     EXPECT_EQ(frame->captureTsNs, rig.camera->captureTsNs(middle));
     EXPECT_EQ(frame->arrivalNs, rig.camera->captureTsNs(middle + 1) + 2'000'000);
-    EXPECT_EQ(frame->frame.format, (calib::PixelFormat{3, 16}));
+    EXPECT_EQ(frame->frame.format, (vem::PixelFormat{3, 16}));
     EXPECT_EQ(frame->frame.gain, 1.0);
     EXPECT_DOUBLE_EQ(frame->frame.exposureUs, 100.0 + 400.0 + 1600.0);
     rig.source->recycle(std::move(*frame));
@@ -143,10 +143,10 @@ TEST(BracketingSource, AFrameAtAnUnexpectedExposureDropsItsGroup) {
 TEST(BracketingSource, InnerErrorsPassThroughAndResetTheGroupInProgress) {
   Rig rig = makeRig();
   rig.camera->errorsAtCall = {
-      {3, vemd::SourceError{vemd::SourceErrorCause::NoDevice, "fake-ldr:cam0: camera unplugged"}}};
+      {3, vem::SourceError{vem::SourceErrorCause::NoDevice, "fake-ldr:cam0: camera unplugged"}}};
   auto error = rig.source->next();  // calls 0, 1, 2 give frames 0, 1 (dropped) and 2; call 3 fails
   ASSERT_FALSE(error.has_value());
-  EXPECT_EQ(error.error().cause, vemd::SourceErrorCause::NoDevice);
+  EXPECT_EQ(error.error().cause, vem::SourceErrorCause::NoDevice);
   EXPECT_EQ(error.error().message, "fake-ldr:cam0: camera unplugged");
   EXPECT_EQ(rig.source->counters().droppedForError, 1u);  // frame 2, the group's start
   auto frame = rig.source->next();                        // the stream goes on
@@ -162,7 +162,7 @@ TEST(BracketingSource, ACameraThatStopsTakingRequestsYieldsABadFrameSentenceNotA
   rig.camera->refuseRequests = true;  // stuck at the base exposure from now on
   auto result = rig.source->next();
   ASSERT_FALSE(result.has_value());
-  EXPECT_EQ(result.error().cause, vemd::SourceErrorCause::BadFrame);
+  EXPECT_EQ(result.error().cause, vem::SourceErrorCause::BadFrame);
   EXPECT_NE(result.error().message.find("no complete bracket"), std::string::npos);
   EXPECT_NE(result.error().message.find("exposure is locked"), std::string::npos);
   EXPECT_GT(rig.source->counters().exposureRequestsRefused, 0u);
@@ -173,7 +173,7 @@ TEST(BracketingSource, InvalidSettingsAreRefusedWithASentence) {
   bad.count = 12;
   auto made = BracketingSource::create(makeCamera(), bad);
   ASSERT_FALSE(made.has_value());
-  EXPECT_EQ(made.error().cause, vemd::SourceErrorCause::NoDevice);
+  EXPECT_EQ(made.error().cause, vem::SourceErrorCause::NoDevice);
   EXPECT_EQ(made.error().message,
             "fake-ldr:cam0: bracketing count is 12: expected 2 to 9 exposures per group");
 }
@@ -187,20 +187,20 @@ TEST(BracketingSource, ACameraWithoutExposureControlIsRefused) {
 }
 
 // A source whose camera file has a log (HDR) response, or none.
-class DescribedSource final : public vemd::FrameSource {
+class DescribedSource final : public vem::FrameSource {
  public:
   explicit DescribedSource(std::string toml) : toml_(std::move(toml)) {}
-  vemd::SourceDescription describe() const override {
-    vemd::SourceDescription d;
+  vem::SourceDescription describe() const override {
+    vem::SourceDescription d;
     d.spec = "described";
     d.pixelFormat = {3, 12};
     d.calibrationToml = toml_;
     return d;
   }
-  std::expected<vemd::CapturedFrame, vemd::SourceError> next() override {
-    return std::unexpected(vemd::SourceError{vemd::SourceErrorCause::Timeout, "none"});
+  std::expected<vem::CapturedFrame, vem::SourceError> next() override {
+    return std::unexpected(vem::SourceError{vem::SourceErrorCause::Timeout, "none"});
   }
-  void recycle(vemd::CapturedFrame&&) override {}
+  void recycle(vem::CapturedFrame&&) override {}
   void interrupt() override {}
   std::expected<void, std::string> setExposure(double, double) override { return {}; }
 
@@ -220,9 +220,9 @@ TEST(BracketingSource, AnHdrCameraOrOneWithoutCameraFileIsRefused) {
 
 TEST(BracketingSource, DescribesAVirtualLogCameraWhoseFileLoadsBackExactly) {
   Rig rig = makeRig();
-  const vemd::SourceDescription d = rig.source->describe();
+  const vem::SourceDescription d = rig.source->describe();
   EXPECT_EQ(d.spec, "bracket:3@2+fake-ldr:cam0");
-  EXPECT_EQ(d.pixelFormat, (calib::PixelFormat{3, 16}));
+  EXPECT_EQ(d.pixelFormat, (vem::PixelFormat{3, 16}));
   EXPECT_DOUBLE_EQ(d.nominalRateHz, 10.0);
   EXPECT_EQ(d.cameraModel, "simulated LDR");
   auto loaded = calib::io::parseCameraFile(d.calibrationToml, d.spec);
@@ -236,7 +236,7 @@ TEST(BracketingSource, DescribesAVirtualLogCameraWhoseFileLoadsBackExactly) {
   }
   EXPECT_EQ(loaded->photometric->saturationCode, 65535.0);
   EXPECT_EQ(loaded->photometric->blackLevelCode, 0.0);
-  EXPECT_EQ(loaded->camera.pixelFormat, (calib::PixelFormat{3, 16}));
+  EXPECT_EQ(loaded->camera.pixelFormat, (vem::PixelFormat{3, 16}));
   ASSERT_TRUE(loaded->lens.has_value());
   EXPECT_EQ(loaded->lens->kPx, testing::wideLensTruth(kWidth, kHeight).kPx);
 }
@@ -274,7 +274,7 @@ TEST(VirtualHdrSensor, SpansFromTheLongestNoiseFloorToTheShortestSaturation) {
   merged.luminanceCdM2 = {
       0.0F, float(lo * 0.5), float(lo),       float(hi * 2.0), float(hi), 1.0F, 2.0F,
       3.0F, -1.0F,           float(lo * 3.7), float(hi / 3.3), 1e-30F};
-  calib::RawFrame out;
+  vem::RawFrame out;
   const VirtualHdrMergeStats stats = encodeVirtualHdr(merged, *sensor, out);
   EXPECT_EQ(out.codes[0], 0);
   EXPECT_EQ(out.codes[1], 0);

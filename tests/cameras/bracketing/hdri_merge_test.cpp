@@ -103,7 +103,7 @@ ErrorDistribution mergeError(const BracketCase& c) {
   calib::SimulationOptions options;
   options.supersamples = 1;
   options.noise = c.noisy ? calib::ldrSensorNoise(7) : calib::SensorNoise{};
-  const std::vector<calib::RawFrame> frames =
+  const std::vector<vem::RawFrame> frames =
       calib::simulateBracket(radiance, camera, exposures, options);
 
   const calib::BracketWeighting weighting = bracketWeightingFor(camera.camera.pixelFormat);
@@ -112,7 +112,7 @@ ErrorDistribution mergeError(const BracketCase& c) {
   EXPECT_TRUE(sensor.has_value());
   if (!sensor) return {};
   BracketMergeScratch scratch;
-  calib::RawFrame out;
+  vem::RawFrame out;
   (void)mergeToVirtualHdr(frames, *camera.photometric, weighting, *sensor, scratch, out);
   const calib::PhotometricCalibration virtualResponse = sensor->photometric();
 
@@ -128,7 +128,7 @@ ErrorDistribution mergeError(const BracketCase& c) {
       const std::size_t s = p * 3 + std::size_t(ch);
       const auto c3 = std::size_t(ch);
       if (truth[p][ch] >= sensor->minCdM2[c3] && truth[p][ch] <= sensor->maxCdM2[c3]) ++inRange;
-      const bool weighed = std::any_of(frames.begin(), frames.end(), [&](const calib::RawFrame& f) {
+      const bool weighed = std::any_of(frames.begin(), frames.end(), [&](const vem::RawFrame& f) {
         return calib::bracketWeight(*camera.photometric, weighting, f.codes[s]) > 0.0;
       });
       if (!weighed) continue;

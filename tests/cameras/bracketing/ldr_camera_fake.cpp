@@ -23,9 +23,9 @@ LdrFakeCamera::LdrFakeCamera(calib::CameraCalibration camera,
       options_(std::move(options)),
       current_(options_.initialExposureUs, options_.initialGain) {}
 
-vemd::SourceDescription LdrFakeCamera::describe() const {
+vem::SourceDescription LdrFakeCamera::describe() const {
   const calib::CameraIdentity& id = camera_.calibration().camera;
-  vemd::SourceDescription d;
+  vem::SourceDescription d;
   d.spec = options_.spec;
   d.cameraModel = id.model;
   d.cameraSerial = id.serial;
@@ -58,7 +58,7 @@ std::int64_t LdrFakeCamera::captureTsNs(std::uint64_t seq) const {
   return 1'000'000'000LL + std::int64_t(double(seq) * 1e9 / options_.rateHz);
 }
 
-std::expected<vemd::CapturedFrame, vemd::SourceError> LdrFakeCamera::next() {
+std::expected<vem::CapturedFrame, vem::SourceError> LdrFakeCamera::next() {
   const int call = calls++;
   if (const auto error = errorsAtCall.find(call); error != errorsAtCall.end()) {
     return std::unexpected(error->second);
@@ -71,7 +71,7 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> LdrFakeCamera::next() {
   synth::SceneState state = scene_->at(timeS(seq_));
   state.exposureUs = exposureUs;
   state.gain = gain;
-  vemd::CapturedFrame out;
+  vem::CapturedFrame out;
   camera_.render(state, seq_, out.frame);
   out.seq = seq_;
   out.captureTsNs = captureTsNs(seq_);
@@ -80,6 +80,6 @@ std::expected<vemd::CapturedFrame, vemd::SourceError> LdrFakeCamera::next() {
   return out;
 }
 
-void LdrFakeCamera::recycle(vemd::CapturedFrame&&) { ++recycled; }
+void LdrFakeCamera::recycle(vem::CapturedFrame&&) { ++recycled; }
 
 }  // namespace vem::testing

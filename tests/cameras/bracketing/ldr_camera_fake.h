@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "calib/core/camera_calibration.h"
+#include "frames/frame_source.h"
 #include "synth/synthetic_camera.h"
 #include "synth/synthetic_scene.h"
-#include "vemd/frame_source.h"
 
 namespace vem::testing {
 
@@ -36,14 +36,14 @@ struct LdrFakeOptions {
   std::string spec = "fake-ldr:cam0";
 };
 
-class LdrFakeCamera final : public vemd::FrameSource {
+class LdrFakeCamera final : public vem::FrameSource {
  public:
   LdrFakeCamera(calib::CameraCalibration camera, std::shared_ptr<const synth::SyntheticScene> scene,
                 LdrFakeOptions options);
 
-  [[nodiscard]] vemd::SourceDescription describe() const override;
-  [[nodiscard]] std::expected<vemd::CapturedFrame, vemd::SourceError> next() override;
-  void recycle(vemd::CapturedFrame&& spent) override;
+  [[nodiscard]] vem::SourceDescription describe() const override;
+  [[nodiscard]] std::expected<vem::CapturedFrame, vem::SourceError> next() override;
+  void recycle(vem::CapturedFrame&& spent) override;
   void interrupt() override { ++interrupts; }
   [[nodiscard]] std::expected<void, std::string> setExposure(double exposureUs,
                                                              double gain) override;
@@ -51,7 +51,7 @@ class LdrFakeCamera final : public vemd::FrameSource {
   // Script (by the camera's frame number = seq).
   std::set<std::uint64_t> lostFrames;                  // captured, never delivered
   std::map<std::uint64_t, double> exposureOverrideUs;  // taken (and reported) at this exposure
-  std::map<int, vemd::SourceError> errorsAtCall;       // next() call number (0-based) fails so
+  std::map<int, vem::SourceError> errorsAtCall;        // next() call number (0-based) fails so
   bool refuseRequests = false;
 
   // What happened.

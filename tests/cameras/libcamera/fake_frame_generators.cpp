@@ -17,7 +17,7 @@ struct SyntheticRig {
   synth::SyntheticCamera camera;
   double rateHz;
 
-  void render(const FakeFrameParams& params, calib::RawFrame& frame) {
+  void render(const FakeFrameParams& params, vem::RawFrame& frame) {
     synth::SceneState state = scene->at(double(params.sequence) / rateHz);
     state.exposureUs = params.exposureUs;
     state.gain = params.gain;
@@ -38,7 +38,7 @@ std::shared_ptr<SyntheticRig> makeRig(const calib::CameraCalibration& camera,
 
 }  // namespace
 
-std::uint16_t patternCode(const FakeFrameParams& params, calib::PixelFormat format, int u, int v,
+std::uint16_t patternCode(const FakeFrameParams& params, vem::PixelFormat format, int u, int v,
                           int channel) {
   const std::uint64_t mixed = std::uint64_t(u) * 7 + std::uint64_t(v) * 131 +
                               std::uint64_t(channel) * 1009 + std::uint64_t(params.sequence) * 37 +
@@ -48,7 +48,7 @@ std::uint16_t patternCode(const FakeFrameParams& params, calib::PixelFormat form
 }
 
 FakeFrameGenerator patternFrames() {
-  return [](const FakeFrameParams& params, calib::RawFrame& frame) {
+  return [](const FakeFrameParams& params, vem::RawFrame& frame) {
     for (int v = 0; v < frame.height; ++v) {
       for (int u = 0; u < frame.width; ++u) {
         for (int c = 0; c < frame.format.channels; ++c) {
@@ -62,8 +62,7 @@ FakeFrameGenerator patternFrames() {
 FakeFrameGenerator syntheticFrames(const calib::CameraCalibration& camera, const std::string& scene,
                                    double rateHz) {
   std::shared_ptr<SyntheticRig> rig = makeRig(camera, scene, rateHz);
-  return
-      [rig](const FakeFrameParams& params, calib::RawFrame& frame) { rig->render(params, frame); };
+  return [rig](const FakeFrameParams& params, vem::RawFrame& frame) { rig->render(params, frame); };
 }
 
 }  // namespace vem::cameras::testing

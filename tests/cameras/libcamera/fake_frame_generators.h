@@ -12,12 +12,12 @@
 #include <string>
 
 #include "calib/core/camera_calibration.h"
-#include "calib/core/raw_frame.h"
 #include "fake_libcamera_port.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras::testing {
 
-[[nodiscard]] std::uint16_t patternCode(const FakeFrameParams& params, calib::PixelFormat format,
+[[nodiscard]] std::uint16_t patternCode(const FakeFrameParams& params, vem::PixelFormat format,
                                         int u, int v, int channel);
 [[nodiscard]] FakeFrameGenerator patternFrames();
 

@@ -6,7 +6,7 @@
 #include <cstdlib>
 
 #include "cameras/libcamera/libcamera_pixel_layout.h"
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::cameras::testing {
 
@@ -17,7 +17,7 @@ std::int64_t areaOf(const LibcameraSize& s) { return std::int64_t(s.widthPx) * s
 }  // namespace
 
 void packLibcameraFrame(const LibcameraPixelFormat& format, int strideBytes,
-                        const calib::RawFrame& frame, std::span<std::uint8_t> bytes) {
+                        const vem::RawFrame& frame, std::span<std::uint8_t> bytes) {
   const int w = frame.width;
   for (int v = 0; v < frame.height; ++v) {
     std::uint8_t* row = bytes.data() + std::size_t(v) * std::size_t(strideBytes);
@@ -210,7 +210,7 @@ void FakeLibcameraPort::release() {
 LibcameraClock FakeLibcameraPort::timestampClock() const { return camera_.clock; }
 
 std::int64_t FakeLibcameraPort::clockNowNs(LibcameraClock clock) const {
-  const std::int64_t now = vemd::monotonicNowNs();
+  const std::int64_t now = vem::monotonicNowNs();
   return clock == LibcameraClock::Boottime ? now + camera_.boottimeAheadNs : now;
 }
 
@@ -275,7 +275,7 @@ void FakeLibcameraPort::deliverOne(std::unique_lock<std::mutex>& lock) {
   if (fail_ > 0) --fail_;
   record.exposureUs = exposureUs_;
   record.gain = double(gain_);
-  record.monotonicCaptureNs = vemd::monotonicNowNs();
+  record.monotonicCaptureNs = vem::monotonicNowNs();
   record.timestampNs =
       std::uint64_t(record.monotonicCaptureNs +
                     (camera_.clock == LibcameraClock::Boottime ? camera_.boottimeAheadNs : 0));
@@ -283,10 +283,10 @@ void FakeLibcameraPort::deliverOne(std::unique_lock<std::mutex>& lock) {
   std::span<std::uint8_t> bytes(buffers_[p.bufferIndex]);
   lock.unlock();  // render outside the lock: the buffer is the fake's until it completes
 
-  calib::RawFrame raw;
+  vem::RawFrame raw;
   raw.width = config.size.widthPx;
   raw.height = config.size.heightPx;
-  raw.format = calibFormatOf(config.format).value_or(calib::PixelFormat{1, 16});
+  raw.format = calibFormatOf(config.format).value_or(vem::PixelFormat{1, 16});
   raw.codes.assign(
       std::size_t(raw.width) * std::size_t(raw.height) * std::size_t(raw.format.channels), 0);
   generator_({record.sequence, record.exposureUs, record.gain}, raw);

@@ -39,8 +39,8 @@
 #include <thread>
 #include <vector>
 
-#include "calib/core/raw_frame.h"
 #include "cameras/libcamera/libcamera_port.h"
+#include "frames/raw_frame.h"
 
 namespace vem::cameras::testing {
 
@@ -51,8 +51,7 @@ struct FakeFrameParams {
 };
 
 // Fills `frame` (width, height, format and codes sized as configured) for `params`.
-using FakeFrameGenerator =
-    std::function<void(const FakeFrameParams& params, calib::RawFrame& frame)>;
+using FakeFrameGenerator = std::function<void(const FakeFrameParams& params, vem::RawFrame& frame)>;
 
 struct FakeLibcameraCamera {
   std::string id = "/base/fake/hdr-sensor@10";
@@ -166,6 +165,6 @@ class FakeLibcameraPort final : public LibcameraCameraPort {
 
 // Packs `frame` into libcamera's memory layout for `format` (rows strideBytes apart).
 void packLibcameraFrame(const LibcameraPixelFormat& format, int strideBytes,
-                        const calib::RawFrame& frame, std::span<std::uint8_t> bytes);
+                        const vem::RawFrame& frame, std::span<std::uint8_t> bytes);
 
 }  // namespace vem::cameras::testing

@@ -10,6 +10,7 @@
 #include "fake_libcamera_port.h"
 #include "support/test_cameras.h"
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 
 namespace vem::cameras {
 namespace {
@@ -18,8 +19,8 @@ constexpr int kWidth = 160;
 constexpr int kHeight = 128;
 constexpr double kRateHz = 30.0;
 
-vemd::ProcessingOptions smallOptions() {
-  vemd::ProcessingOptions o;
+vem::ProcessingOptions smallOptions() {
+  vem::ProcessingOptions o;
   o.mapWidth = 128;
   o.mapHeight = 32;
   o.lightCount = 64;
@@ -41,8 +42,8 @@ TEST(LibcameraLights, LightsThroughTheFakeCameraEqualLightsFromTheSameFramesDire
   ASSERT_TRUE(source) << source.error().message;
 
   auto viaCamera =
-      vemd::Pipeline::create((*source)->describe().calibrationToml, "camera", smallOptions());
-  auto direct = vemd::Pipeline::create(toml, "camera", smallOptions());
+      vemd::pipelineFromCameraFile((*source)->describe().calibrationToml, "camera", smallOptions());
+  auto direct = vemd::pipelineFromCameraFile(toml, "camera", smallOptions());
   ASSERT_TRUE(viaCamera) << viaCamera.error();
   ASSERT_TRUE(direct);
   testing::FakeFrameGenerator reference = testing::syntheticFrames(camera, "sky", kRateHz);
@@ -53,13 +54,13 @@ TEST(LibcameraLights, LightsThroughTheFakeCameraEqualLightsFromTheSameFramesDire
     ASSERT_FALSE(viaCamera->frameProblem(captured->frame))
         << *viaCamera->frameProblem(captured->frame);
     const auto record = fake->delivered().at(captured->seq);
-    vemd::CapturedFrame same;
+    vem::CapturedFrame same;
     reference({record.sequence, record.exposureUs, record.gain}, same.frame);
     same.seq = captured->seq;
     ASSERT_EQ(captured->frame.codes, same.frame.codes);
 
-    const vemd::ProcessedFrame& a = viaCamera->process(*captured);
-    const vemd::ProcessedFrame& b = direct->process(same);
+    const vem::ProcessedFrame& a = viaCamera->process(*captured);
+    const vem::ProcessedFrame& b = direct->process(same);
     ASSERT_EQ(a.lights.lights.size(), b.lights.lights.size());
     EXPECT_EQ(a.lights.luminanceSr, b.lights.luminanceSr);
     EXPECT_GT(a.lights.luminanceSr, 0.0);

@@ -17,7 +17,7 @@ namespace {
 
 using testing::FakeLibcameraCamera;
 using testing::FakeLibcameraPort;
-using vemd::SourceErrorCause;
+using vem::SourceErrorCause;
 
 constexpr int kWidth = 36;  // rows of 72 bytes in R16: padded to 128 by the fake's stride
 constexpr int kHeight = 20;
@@ -47,7 +47,7 @@ Rig openRig(FakeLibcameraCamera camera, CameraSettings settings = {},
   return rig;
 }
 
-vemd::CapturedFrame nextFrame(LibcameraSource& source) {
+vem::CapturedFrame nextFrame(LibcameraSource& source) {
   for (int attempt = 0; attempt < 20; ++attempt) {
     auto frame = source.next();
     if (frame) return std::move(*frame);
@@ -62,7 +62,7 @@ vemd::CapturedFrame nextFrame(LibcameraSource& source) {
 struct FormatCase {
   LibcameraPixelFormat format;
   LibcameraRole role;
-  calib::PixelFormat pixel;
+  vem::PixelFormat pixel;
 };
 
 class LibcameraSourcePixels : public ::testing::TestWithParam<FormatCase> {};
@@ -73,7 +73,7 @@ TEST_P(LibcameraSourcePixels, EveryCodeAndTheFramesMetadataArriveExactly) {
   ASSERT_TRUE(rig.source);
   EXPECT_EQ(rig.source->describe().pixelFormat, fc.pixel);
   for (std::uint64_t k = 0; k < 3; ++k) {
-    const vemd::CapturedFrame got = nextFrame(*rig.source);
+    const vem::CapturedFrame got = nextFrame(*rig.source);
     ASSERT_EQ(got.seq, k);
     const auto record = rig.fake->delivered().at(k);
     ASSERT_EQ(got.frame.width, kWidth);
@@ -112,7 +112,7 @@ TEST(LibcameraSource, BoottimeStampsAreConvertedToMonotonic) {
   camera.boottimeAheadNs = 5'000'000'000;  // 5 s spent suspended
   Rig rig = openRig(camera);
   ASSERT_TRUE(rig.source);
-  const vemd::CapturedFrame got = nextFrame(*rig.source);
+  const vem::CapturedFrame got = nextFrame(*rig.source);
   const auto record = rig.fake->delivered().at(0);
   EXPECT_EQ(record.timestampNs, std::uint64_t(record.monotonicCaptureNs + 5'000'000'000));
   // Clocks read a moment apart: within a millisecond of the true instant, never after arrival.
@@ -127,12 +127,12 @@ TEST(LibcameraSource, SettingsControlsGoWithStartAndSetExposureReachesLaterFrame
   settings.frameRateHz = 25.0;
   Rig rig = openRig(cameraOffering(kLibcameraR16, LibcameraRole::Raw), settings);
   ASSERT_TRUE(rig.source);
-  vemd::CapturedFrame first = nextFrame(*rig.source);
+  vem::CapturedFrame first = nextFrame(*rig.source);
   EXPECT_EQ(first.frame.exposureUs, 3000.0);
   EXPECT_EQ(first.frame.gain, 2.0);
   EXPECT_EQ(rig.source->describe().nominalRateHz, 25.0);
   ASSERT_TRUE(rig.source->setExposure(800.0, 4.0));
-  std::vector<vemd::CapturedFrame> later;
+  std::vector<vem::CapturedFrame> later;
   for (int k = 0; k < 10; ++k) later.push_back(nextFrame(*rig.source));
   EXPECT_EQ(later.back().frame.exposureUs, 800.0);
   EXPECT_EQ(later.back().frame.gain, 4.0);
@@ -148,7 +148,7 @@ TEST(LibcameraSource, ExposureTheSensorClampedIsReportedNotTheAskedOne) {
   Rig rig = openRig(cameraOffering(kLibcameraR16, LibcameraRole::Raw));
   ASSERT_TRUE(rig.source);
   ASSERT_TRUE(rig.source->setExposure(900'000.0, 1.0));  // the fake sensor stops at 200 ms
-  vemd::CapturedFrame got;
+  vem::CapturedFrame got;
   for (int k = 0; k < 8; ++k) got = nextFrame(*rig.source);
   EXPECT_EQ(got.frame.exposureUs, 200'000.0);
   EXPECT_FALSE(rig.source->setExposure(-5.0, 1.0));
@@ -163,7 +163,7 @@ TEST(LibcameraSource, WithoutExposureMetadataTheAskedExposureIsReported) {
   Rig rig = openRig(camera, settings);
   ASSERT_TRUE(rig.source);
   ASSERT_TRUE(rig.source->setExposure(1500.0, 3.0));
-  vemd::CapturedFrame got;
+  vem::CapturedFrame got;
   for (int k = 0; k < 6; ++k) got = nextFrame(*rig.source);
   EXPECT_EQ(got.frame.exposureUs, 1500.0);
   EXPECT_EQ(got.frame.gain, 3.0);
@@ -219,7 +219,7 @@ TEST(LibcameraSource, UnplugGivesNoDeviceAndReplugResumesWithIncreasingSeq) {
   for (int k = 0; k < 3; ++k) lastSeq = nextFrame(*rig.source).seq;
   rig.fake->unplug();
   // Frames already completed may still come; then the removal.
-  std::expected<vemd::CapturedFrame, vemd::SourceError> r;
+  std::expected<vem::CapturedFrame, vem::SourceError> r;
   for (int k = 0; k < 10; ++k) {
     r = rig.source->next();
     if (!r && r.error().cause == SourceErrorCause::NoDevice) break;
@@ -234,7 +234,7 @@ TEST(LibcameraSource, UnplugGivesNoDeviceAndReplugResumesWithIncreasingSeq) {
   EXPECT_EQ(whileGone.error().cause, SourceErrorCause::NoDevice);
   EXPECT_NE(whileGone.error().message.find("not connected"), std::string::npos);
   rig.fake->replug();
-  const vemd::CapturedFrame resumed = nextFrame(*rig.source);
+  const vem::CapturedFrame resumed = nextFrame(*rig.source);
   EXPECT_GT(resumed.seq, lastSeq);
   EXPECT_EQ(resumed.frame.width, kWidth);
   EXPECT_EQ(rig.source->counters().reopened, 1u);
@@ -270,7 +270,7 @@ TEST(LibcameraSource, CancelledRequestsAreCountedAndTheCameraIsRestarted) {
   ASSERT_TRUE(rig.source);
   const std::uint64_t before = nextFrame(*rig.source).seq;
   ASSERT_EQ(rig.fake->stop(), 0);  // the pipeline stopped underneath: pending requests cancelled
-  std::optional<vemd::CapturedFrame> resumed;
+  std::optional<vem::CapturedFrame> resumed;
   for (int k = 0; k < 5 && !resumed; ++k) {
     auto r = rig.source->next();
     if (r) resumed = std::move(*r);
@@ -328,12 +328,12 @@ TEST(LibcameraSource, RecycledStorageIsReusedAndDescribeNamesTheCamera) {
   settings.calibrationToml = "# the camera file";
   Rig rig = openRig(cameraOffering(kLibcameraR16, LibcameraRole::Raw), settings);
   ASSERT_TRUE(rig.source);
-  vemd::CapturedFrame first = nextFrame(*rig.source);
+  vem::CapturedFrame first = nextFrame(*rig.source);
   const std::uint16_t* storage = first.frame.codes.data();
   rig.source->recycle(std::move(first));
-  const vemd::CapturedFrame second = nextFrame(*rig.source);
+  const vem::CapturedFrame second = nextFrame(*rig.source);
   EXPECT_EQ(second.frame.codes.data(), storage);
-  const vemd::SourceDescription d = rig.source->describe();
+  const vem::SourceDescription d = rig.source->describe();
   EXPECT_EQ(d.spec, "libcamera:/base/fake/hdr-sensor@10");
   EXPECT_EQ(d.cameraModel, "fake-hdr-sensor");
   EXPECT_EQ(d.cameraSerial, "/base/fake/hdr-sensor@10");

@@ -6,7 +6,7 @@
 #include <cstring>
 
 #include "cameras/v4l2/fake_v4l2_device.h"
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::testing {
 
@@ -71,14 +71,14 @@ cameras::V4l2Opener FakeV4l2Camera::opener(std::string expectedPath) {
 
 bool FakeV4l2Camera::pushFrame(const FakeFrame& frame) {
   std::lock_guard lock(state_->mutex);
-  return state_->deliver(frame, vemd::monotonicNowNs());
+  return state_->deliver(frame, vem::monotonicNowNs());
 }
 
 void FakeV4l2Camera::setGenerator(FakeFrameGenerator generator, std::int64_t periodNs) {
   std::lock_guard lock(state_->mutex);
   state_->generator = std::move(generator);
   state_->periodNs = periodNs;
-  state_->nextDueNs = vemd::monotonicNowNs() + periodNs;
+  state_->nextDueNs = vem::monotonicNowNs() + periodNs;
   state_->ready.signal();
 }
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::testing {
 
@@ -47,7 +47,7 @@ int FakeV4l2Device::ioctl(unsigned long request, void* arg) {
   std::lock_guard lock(state_->mutex);
   if (dead()) return ENODEV;
   if (auto fault = state_->takeFault(request)) return *fault;
-  state_->advance(vemd::monotonicNowNs());
+  state_->advance(vem::monotonicNowNs());
   return dispatch(request, arg);
 }
 
@@ -211,7 +211,7 @@ int FakeV4l2Device::streamon(bool on) {
   if (on) {
     if (!s.streaming) {
       s.streaming = true;
-      s.streamOnNs = vemd::monotonicNowNs();
+      s.streamOnNs = vem::monotonicNowNs();
       s.nextDueNs = s.streamOnNs + s.periodNs;
     }
   } else {
@@ -306,7 +306,7 @@ cameras::V4l2PollResult FakeV4l2Device::pollState() const {
 }
 
 std::expected<cameras::V4l2PollResult, int> FakeV4l2Device::poll(int wakeFd, int timeoutMs) {
-  const std::int64_t deadlineNs = vemd::monotonicNowNs() + std::int64_t(timeoutMs) * 1'000'000;
+  const std::int64_t deadlineNs = vem::monotonicNowNs() + std::int64_t(timeoutMs) * 1'000'000;
   {
     std::lock_guard lock(state_->mutex);
     if (auto fault = state_->takeFault(0)) return std::unexpected(*fault);
@@ -315,7 +315,7 @@ std::expected<cameras::V4l2PollResult, int> FakeV4l2Device::poll(int wakeFd, int
     std::int64_t waitNs = 0;
     {
       std::lock_guard lock(state_->mutex);
-      const std::int64_t nowNs = vemd::monotonicNowNs();
+      const std::int64_t nowNs = vem::monotonicNowNs();
       if (!dead()) state_->advance(nowNs);
       cameras::V4l2PollResult result = pollState();
       if (result.frameReady || result.deviceError) {
@@ -339,7 +339,7 @@ std::expected<cameras::V4l2PollResult, int> FakeV4l2Device::poll(int wakeFd, int
       state_->ready.consume();
       continue;
     }
-    if (vemd::monotonicNowNs() >= deadlineNs) return cameras::V4l2PollResult{};
+    if (vem::monotonicNowNs() >= deadlineNs) return cameras::V4l2PollResult{};
   }
 }
 

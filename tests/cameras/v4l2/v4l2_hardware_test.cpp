@@ -29,17 +29,17 @@ TEST(V4l2Hardware, TheCameraStreamsTenFramesWithIncreasingSeqAndMonotonicTimesta
   settings.timeoutMs = 3000;
   auto source = V4l2Source::open(path, settings);
   ASSERT_TRUE(source) << source.error().message;
-  const vemd::SourceDescription d = (*source)->describe();
+  const vem::SourceDescription d = (*source)->describe();
   std::printf("%s: %s (%s) %dx%d %s at %.2f Hz\n", d.spec.c_str(), d.cameraModel.c_str(),
               d.cameraSerial.c_str(), d.sensorWidthPx, d.sensorHeightPx,
-              calib::pixelFormatName(d.pixelFormat).c_str(), d.nominalRateHz);
+              vem::pixelFormatName(d.pixelFormat).c_str(), d.nominalRateHz);
   std::uint64_t lastSeq = 0;
   std::int64_t lastTs = 0;
   int frames = 0;
   for (int attempt = 0; attempt < 40 && frames < 10; ++attempt) {
     auto frame = (*source)->next();
     if (!frame) {
-      ASSERT_NE(frame.error().cause, vemd::SourceErrorCause::NoDevice) << frame.error().message;
+      ASSERT_NE(frame.error().cause, vem::SourceErrorCause::NoDevice) << frame.error().message;
       continue;
     }
     if (frames > 0) {

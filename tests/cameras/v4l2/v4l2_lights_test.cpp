@@ -9,6 +9,7 @@
 #include "support/test_cameras.h"
 #include "support/test_maps.h"
 #include "vemd/pipeline.h"
+#include "vemd/pipeline_setup.h"
 
 namespace vem::testing {
 namespace {
@@ -17,9 +18,9 @@ constexpr int kWidth = 160;
 constexpr int kHeight = 128;
 constexpr int kFrames = 12;
 
-std::vector<calib::RawFrame> skyFrames(const calib::CameraCalibration& camera) {
+std::vector<vem::RawFrame> skyFrames(const calib::CameraCalibration& camera) {
   const EnvMap sky = proceduralSky(MapLayout::Sphere, 128, 64);
-  std::vector<calib::RawFrame> frames;
+  std::vector<vem::RawFrame> frames;
   for (int i = 0; i < kFrames; ++i) {
     calib::SimulationOptions options;
     options.supersamples = 1;
@@ -31,8 +32,8 @@ std::vector<calib::RawFrame> skyFrames(const calib::CameraCalibration& camera) {
   return frames;
 }
 
-vemd::ProcessingOptions smallProcessing() {
-  vemd::ProcessingOptions o;
+vem::ProcessingOptions smallProcessing() {
+  vem::ProcessingOptions o;
   o.mapWidth = 256;
   o.mapHeight = 64;
   o.lightCount = 64;
@@ -53,9 +54,9 @@ void expectSameLights(const LightSet& a, const LightSet& b, int frame) {
 
 TEST(V4l2Lights, LightsThroughTheFakeDriverEqualLightsFromTheFramesDirectly) {
   const calib::CameraCalibration camera = cameraTruth(kWidth, kHeight, 1);
-  ASSERT_EQ(camera.camera.pixelFormat, (calib::PixelFormat{1, 12}));
+  ASSERT_EQ(camera.camera.pixelFormat, (vem::PixelFormat{1, 12}));
   const std::string toml = calib::io::formatCameraFile(camera);
-  const std::vector<calib::RawFrame> frames = skyFrames(camera);
+  const std::vector<vem::RawFrame> frames = skyFrames(camera);
 
   FakeV4l2Camera fake(fakeConfig(V4L2_PIX_FMT_Y12, kWidth, kHeight, 256));
   cameras::CameraSettings settings = settingsFor("Mono12", kWidth, kHeight);
@@ -66,8 +67,8 @@ TEST(V4l2Lights, LightsThroughTheFakeDriverEqualLightsFromTheFramesDirectly) {
   ASSERT_TRUE(source);
 
   auto throughDriver =
-      vemd::Pipeline::create(source->describe().calibrationToml, "v4l2", smallProcessing());
-  auto direct = vemd::Pipeline::create(toml, "direct", smallProcessing());
+      vemd::pipelineFromCameraFile(source->describe().calibrationToml, "v4l2", smallProcessing());
+  auto direct = vemd::pipelineFromCameraFile(toml, "direct", smallProcessing());
   ASSERT_TRUE(throughDriver) << throughDriver.error();
   ASSERT_TRUE(direct) << direct.error();
 
@@ -76,13 +77,13 @@ TEST(V4l2Lights, LightsThroughTheFakeDriverEqualLightsFromTheFramesDirectly) {
     auto captured = source->next();
     ASSERT_TRUE(captured) << captured.error().message;
     ASSERT_EQ(throughDriver->frameProblem(captured->frame), std::nullopt);
-    const vemd::CapturedFrame fed{frames[std::size_t(i)], std::uint64_t(i), captured->captureTsNs,
-                                  captured->arrivalNs};
+    const vem::CapturedFrame fed{frames[std::size_t(i)], std::uint64_t(i), captured->captureTsNs,
+                                 captured->arrivalNs};
     EXPECT_EQ(captured->seq, fed.seq);
     EXPECT_EQ(captured->frame.exposureUs, fed.frame.exposureUs);
     EXPECT_EQ(captured->frame.gain, fed.frame.gain);
-    const vemd::ProcessedFrame& a = throughDriver->process(*captured);
-    const vemd::ProcessedFrame& b = direct->process(fed);
+    const vem::ProcessedFrame& a = throughDriver->process(*captured);
+    const vem::ProcessedFrame& b = direct->process(fed);
     expectSameLights(a.lights, b.lights, i);
     ASSERT_EQ(a.filtered.has_value(), b.filtered.has_value());
     if (a.filtered) expectSameLights(*a.filtered, *b.filtered, i);

@@ -7,12 +7,12 @@
 #include <thread>
 
 #include "cameras/v4l2/v4l2_source_fixtures.h"
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 namespace vem::testing {
 namespace {
 
-using vemd::SourceErrorCause;
+using vem::SourceErrorCause;
 
 FakeFrameGenerator constantFrames() {
   return [](std::uint64_t index, const v4l2_pix_format& format) {
@@ -24,7 +24,7 @@ FakeFrameGenerator constantFrames() {
   };
 }
 
-double msSince(std::int64_t startNs) { return double(vemd::monotonicNowNs() - startNs) / 1e6; }
+double msSince(std::int64_t startNs) { return double(vem::monotonicNowNs() - startNs) / 1e6; }
 
 TEST(V4l2SourceFaults, EintrFromPollDequeueAndQueueIsRetried) {
   FakeV4l2Camera camera(fakeConfig(V4L2_PIX_FMT_Y16, 8, 4));
@@ -59,7 +59,7 @@ TEST(V4l2SourceFaults, NoFrameWithinTheTimeoutIsTimeout) {
   settings.timeoutMs = 40;
   auto source = openSource(camera, settings);
   ASSERT_TRUE(source);
-  const std::int64_t start = vemd::monotonicNowNs();
+  const std::int64_t start = vem::monotonicNowNs();
   auto frame = source->next();
   ASSERT_FALSE(frame);
   EXPECT_EQ(frame.error().cause, SourceErrorCause::Timeout);
@@ -76,7 +76,7 @@ TEST(V4l2SourceFaults, InterruptFromAnotherThreadWakesAWaitingNext) {
   settings.timeoutMs = 20'000;
   auto source = openSource(camera, settings);
   ASSERT_TRUE(source);
-  const std::int64_t start = vemd::monotonicNowNs();
+  const std::int64_t start = vem::monotonicNowNs();
   std::thread other([&] {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     source->interrupt();
@@ -98,7 +98,7 @@ TEST(V4l2SourceFaults, AnInterruptBeforeNextIsNotLost) {
   auto source = openSource(camera, settings);
   ASSERT_TRUE(source);
   source->interrupt();
-  const std::int64_t start = vemd::monotonicNowNs();
+  const std::int64_t start = vem::monotonicNowNs();
   auto frame = source->next();
   ASSERT_FALSE(frame);
   EXPECT_EQ(frame.error().cause, SourceErrorCause::Timeout);
@@ -151,7 +151,7 @@ TEST(V4l2SourceFaults, UnplugWhileWaitingEndsTheWaitWithNoDevice) {
   settings.timeoutMs = 20'000;
   auto source = openSource(camera, settings);
   ASSERT_TRUE(source);
-  const std::int64_t start = vemd::monotonicNowNs();
+  const std::int64_t start = vem::monotonicNowNs();
   std::thread other([&] {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     camera.unplug();

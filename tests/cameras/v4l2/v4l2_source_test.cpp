@@ -11,7 +11,7 @@ using cameras::V4l2Source;
 struct SourceFormat {
   std::uint32_t fourcc;
   const char* asked;
-  calib::PixelFormat output;
+  vem::PixelFormat output;
   int bits;  // of the codes written
 };
 
@@ -77,7 +77,7 @@ TEST(V4l2Source, NoPixelFormatPicksTheDeepestTheCameraOffers) {
   auto source = openSource(camera, settingsFor("", 0, 0));
   ASSERT_TRUE(source);
   EXPECT_EQ(camera.format().pixelformat, V4L2_PIX_FMT_Y12);
-  EXPECT_EQ(source->describe().pixelFormat, (calib::PixelFormat{1, 12}));
+  EXPECT_EQ(source->describe().pixelFormat, (vem::PixelFormat{1, 12}));
 }
 
 TEST(V4l2Source, NoSizeTakesTheLargestTheDriverLists) {
@@ -244,7 +244,7 @@ TEST(V4l2Source, DescribeNamesTheCardBusSizeAndCalibration) {
   settings.calibrationToml = "format = \"vemcast-camera\"\n";
   auto source = openSource(camera, settings);
   ASSERT_TRUE(source);
-  const vemd::SourceDescription d = source->describe();
+  const vem::SourceDescription d = source->describe();
   EXPECT_EQ(d.spec, "v4l2:/dev/video0");
   EXPECT_EQ(d.cameraModel, "Insta360 X3");
   EXPECT_EQ(d.cameraSerial, "usb-0000:00:14.0-2");
@@ -263,7 +263,7 @@ TEST(V4l2Source, AFormatTheDriverReplacesIsRefusedWithOneSentence) {
   FakeV4l2Camera camera(config);
   auto source = V4l2Source::open(kFakePath, camera.opener(), settingsFor("Mono16", 1280, 1024));
   ASSERT_FALSE(source);
-  EXPECT_EQ(source.error().cause, vemd::SourceErrorCause::NoDevice);
+  EXPECT_EQ(source.error().cause, vem::SourceErrorCause::NoDevice);
   EXPECT_EQ(source.error().message,
             "v4l2:/dev/video0: the camera offers YUYV 640x480, not Y16 1280x1024");
 }
@@ -291,7 +291,7 @@ TEST(V4l2Source, AMissingDeviceIsNoDeviceNamingTheSpec) {
   auto source =
       V4l2Source::open("/dev/video7", camera.opener(kFakePath), settingsFor("Mono16", 8, 4));
   ASSERT_FALSE(source);
-  EXPECT_EQ(source.error().cause, vemd::SourceErrorCause::NoDevice);
+  EXPECT_EQ(source.error().cause, vem::SourceErrorCause::NoDevice);
   EXPECT_EQ(source.error().message,
             "v4l2:/dev/video7: cannot open the camera (No such file or directory)");
 }

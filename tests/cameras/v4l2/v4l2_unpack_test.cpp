@@ -14,14 +14,14 @@ namespace {
 
 using Bytes = std::vector<std::uint8_t>;
 
-calib::RawFrame unpack(const Bytes& bytes, std::uint32_t fourcc, int w, int h, std::size_t bpl,
-                       calib::PixelFormat output) {
-  calib::RawFrame frame;
+vem::RawFrame unpack(const Bytes& bytes, std::uint32_t fourcc, int w, int h, std::size_t bpl,
+                     vem::PixelFormat output) {
+  vem::RawFrame frame;
   unpackV4l2Frame(std::as_bytes(std::span(bytes)), {fourcc, w, h, bpl, output}, frame);
   return frame;
 }
 
-std::vector<std::uint16_t> codes(const calib::RawFrame& f) { return f.codes; }
+std::vector<std::uint16_t> codes(const vem::RawFrame& f) { return f.codes; }
 
 TEST(V4l2Unpack, Y16IsLittleEndianAndY16BeBigEndian) {
   EXPECT_EQ(codes(unpack({0x34, 0x12, 0xff, 0xff}, V4L2_PIX_FMT_Y16, 2, 1, 4, {1, 16})),
@@ -56,13 +56,13 @@ TEST(V4l2Unpack, Y10bpackIsABigEndianBitStream) {
 
 // BT.601 limited range: Y 16 black, 235 white; (81, 90, 240) is pure red.
 TEST(V4l2Unpack, YuyvBecomesBt601LimitedRangeRgb) {
-  const calib::RawFrame f =
+  const vem::RawFrame f =
       unpack({16, 128, 235, 128, 81, 90, 81, 240}, V4L2_PIX_FMT_YUYV, 4, 1, 8, {3, 8});
   EXPECT_EQ(f.codes, (std::vector<std::uint16_t>{0, 0, 0, 255, 255, 255, 255, 0, 0, 255, 0, 0}));
 }
 
 TEST(V4l2Unpack, YuyvAsMono8TakesLumaOnly) {
-  const calib::RawFrame f = unpack({16, 128, 235, 128}, V4L2_PIX_FMT_YUYV, 2, 1, 4, {1, 8});
+  const vem::RawFrame f = unpack({16, 128, 235, 128}, V4L2_PIX_FMT_YUYV, 2, 1, 4, {1, 8});
   EXPECT_EQ(f.codes, (std::vector<std::uint16_t>{16, 235}));
 }
 
@@ -82,7 +82,7 @@ TEST(V4l2Unpack, PaddedRowsAreSkippedByBytesPerLine) {
 
 struct RoundTrip {
   std::uint32_t fourcc;
-  calib::PixelFormat output;
+  vem::PixelFormat output;
   int widthPx;
 };
 
@@ -100,7 +100,7 @@ TEST_P(V4l2UnpackRoundTrip, WriterAndReaderAgreeOnEveryPixelAtPaddedStride) {
   std::vector<std::uint16_t> in(std::size_t(p.widthPx * h * p.output.channels));
   for (auto& c : in) c = std::uint16_t(random() & p.output.maxCode());
   const Bytes bytes = testing::encodeFakeFrame(in, format);
-  const calib::RawFrame out = unpack(bytes, p.fourcc, p.widthPx, h, format.bytesperline, p.output);
+  const vem::RawFrame out = unpack(bytes, p.fourcc, p.widthPx, h, format.bytesperline, p.output);
   EXPECT_EQ(out.format, p.output);
   EXPECT_EQ(out.width, p.widthPx);
   EXPECT_EQ(out.height, h);

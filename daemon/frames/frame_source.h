@@ -26,10 +26,10 @@
 #include <expected>
 #include <string>
 
-#include "calib/core/raw_frame.h"
-#include "vemd/captured_frame.h"
+#include "frames/captured_frame.h"
+#include "frames/raw_frame.h"
 
-namespace vem::vemd {
+namespace vem {
 
 enum class SourceErrorCause { EndOfStream, Timeout, NoDevice, BadFrame };
 
@@ -47,7 +47,7 @@ struct SourceDescription {
   std::string cameraSerial;
   int sensorWidthPx = 0;
   int sensorHeightPx = 0;
-  calib::PixelFormat pixelFormat;
+  PixelFormat pixelFormat;
   std::string calibrationToml;  // the camera file in force (calib/io/camera_file.h); may be empty
   double nominalRateHz = 0.0;   // 0 = unknown
   bool liveClock = false;       // captureTsNs is CLOCK_MONOTONIC (the latency from capture)
@@ -68,4 +68,4 @@ class FrameSource {
 // CLOCK_MONOTONIC now, in nanoseconds (the clock of arrivalNs and of live captureTsNs).
 [[nodiscard]] std::int64_t monotonicNowNs();
 
-}  // namespace vem::vemd
+}  // namespace vem

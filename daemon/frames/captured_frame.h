@@ -9,15 +9,15 @@
 
 #include <cstdint>
 
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
-namespace vem::vemd {
+namespace vem {
 
 struct CapturedFrame {
-  calib::RawFrame frame;
+  RawFrame frame;
   std::uint64_t seq = 0;
   std::int64_t captureTsNs = 0;
   std::int64_t arrivalNs = 0;
 };
 
-}  // namespace vem::vemd
+}  // namespace vem

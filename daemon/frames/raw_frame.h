@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace vem::calib {
+namespace vem {
 
 // The sensor's pixel format: 1 (mono) or 3 (RGB) channels of 8 to 16 bits.
 struct PixelFormat {
@@ -50,4 +50,4 @@ struct RawFrame {
   }
 };
 
-}  // namespace vem::calib
+}  // namespace vem

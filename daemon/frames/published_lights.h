@@ -13,9 +13,9 @@
 
 #include "core/light.h"
 #include "core/light_clustering.h"
-#include "vemd/processed_frame.h"
+#include "frames/processed_frame.h"
 
-namespace vem::vemd {
+namespace vem {
 
 struct PublishedLights {
   const LightSet* lights = nullptr;        // never null
@@ -27,4 +27,4 @@ struct PublishedLights {
 // `frame.captured` must not be null.
 [[nodiscard]] PublishedLights publishedLights(const ProcessedFrame& frame);
 
-}  // namespace vem::vemd
+}  // namespace vem

@@ -15,9 +15,9 @@
 #include "core/env_map.h"
 #include "core/light.h"
 #include "core/light_clustering.h"
-#include "vemd/captured_frame.h"
+#include "frames/captured_frame.h"
 
-namespace vem::vemd {
+namespace vem {
 
 struct StageTiming {
   std::string stage;  // "calibrate", "tables", "lights", "filter", "cluster", ...
@@ -29,9 +29,9 @@ struct ProcessedFrame {
   const EnvMap* polar = nullptr;            // borrowed
   LightSet lights;
   std::optional<LightSet> filtered;
-  std::uint64_t filteredSeq = 0;            // the frame the filtered set stands for
-  std::optional<Clustering> clustering;     // of the filtered set (or the raw one without filter)
+  std::uint64_t filteredSeq = 0;         // the frame the filtered set stands for
+  std::optional<Clustering> clustering;  // of the filtered set (or the raw one without filter)
   std::vector<StageTiming> timings;
 };
 
-}  // namespace vem::vemd
+}  // namespace vem

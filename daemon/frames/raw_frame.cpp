@@ -1,8 +1,8 @@
-#include "calib/core/raw_frame.h"
+#include "frames/raw_frame.h"
 
 #include <charconv>
 
-namespace vem::calib {
+namespace vem {
 
 std::string pixelFormatName(PixelFormat format) {
   return (format.channels == 1 ? "Mono" : "RGB") + std::to_string(format.bits);
@@ -37,4 +37,4 @@ RawFrame RawFrame::blank(int width, int height, PixelFormat format) {
   return frame;
 }
 
-}  // namespace vem::calib
+}  // namespace vem

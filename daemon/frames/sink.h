@@ -10,9 +10,9 @@
 #include <expected>
 #include <string>
 
-#include "vemd/processed_frame.h"
+#include "frames/processed_frame.h"
 
-namespace vem::vemd {
+namespace vem {
 
 struct SinkFailure {
   std::string message;  // one sentence naming the sink, the file and the cause
@@ -31,4 +31,4 @@ class Sink {
   [[nodiscard]] virtual std::expected<void, SinkFailure> close() = 0;
 };
 
-}  // namespace vem::vemd
+}  // namespace vem

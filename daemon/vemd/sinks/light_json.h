@@ -4,7 +4,8 @@
 // A clustered frame adds "clustered_from" (the lights before clustering), "radius_rad" and per
 // cluster "members" (the ids of the lights it holds); its "id" is its seed light's id.
 // vemd's JSON-lines sink (daemon/vemd/sinks/jsonl_light_sink.h) writes the same objects from the
-// clustering each frame already has; "radius_rad" is always the radius that clustering was made with.
+// clustering each frame already has; "radius_rad" is always the radius that clustering was made
+// with.
 #pragma once
 
 #include <cstdint>
@@ -15,7 +16,7 @@
 #include "core/light.h"
 #include "core/light_clustering.h"
 
-namespace vem::tool {
+namespace vem::vemd {
 
 [[nodiscard]] nlohmann::ordered_json frameJson(const LightSet& lights, std::uint64_t frame);
 [[nodiscard]] nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, int clusterQ,
@@ -26,4 +27,4 @@ namespace vem::tool {
                                                         const Clustering& clustering,
                                                         std::uint64_t frame);
 
-}  // namespace vem::tool
+}  // namespace vem::vemd

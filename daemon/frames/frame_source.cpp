@@ -1,8 +1,8 @@
-#include "vemd/frame_source.h"
+#include "frames/frame_source.h"
 
 #include <ctime>
 
-namespace vem::vemd {
+namespace vem {
 
 const char* sourceErrorName(SourceErrorCause cause) {
   switch (cause) {
@@ -24,4 +24,4 @@ std::int64_t monotonicNowNs() {
   return std::int64_t(ts.tv_sec) * 1'000'000'000LL + std::int64_t(ts.tv_nsec);
 }
 
-}  // namespace vem::vemd
+}  // namespace vem

@@ -1,4 +1,4 @@
-#include "light_json.h"
+#include "vemd/sinks/light_json.h"
 
 #include <cstdlib>
 #include <string>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace vem::tool {
+namespace vem::vemd {
 namespace {
 
 // A float as the double with the same shortest decimal form, so JSON shows 0.3, not 0.30000001.
@@ -48,4 +48,4 @@ nlohmann::ordered_json clusteredFrameJson(const LightSet& lights, const Clusteri
   return out;
 }
 
-}  // namespace vem::tool
+}  // namespace vem::vemd

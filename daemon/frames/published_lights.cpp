@@ -1,8 +1,8 @@
-#include "vemd/sinks/published_lights.h"
+#include "frames/published_lights.h"
 
 #include <algorithm>
 
-namespace vem::vemd {
+namespace vem {
 namespace {
 
 // One cluster index per light, each naming an existing cluster.
@@ -31,4 +31,4 @@ PublishedLights publishedLights(const ProcessedFrame& frame) {
   return out;
 }
 
-}  // namespace vem::vemd
+}  // namespace vem

@@ -1,0 +1,50 @@
+// Streaming in vemd: from vemd's configuration ([stream], and [output] for recordings and
+// allow_missing) to a listening StreamServer (stream/stream_setup.h), the StreamSink and the
+// RecordingSwitch (which records through vemd's recorder, sinks/recorder_sink.h) that join
+// vemd's sinks, and the StreamControl the loop calls between frames. vemd is the one place that
+// wires the stream to the recorder and the loop; the stream folder knows neither.
+//
+// A port that cannot be bound (taken, say) stops vemd, its sentence naming the address and
+// output.allow_missing; with output.allow_missing = true (--allow-missing-outputs) it is a warning
+// and vemd runs without streaming. TLS files that do not load always stop it. Disabled ([stream]
+// enabled = false or listen = ""): nothing is started.
+#pragma once
+
+#include <expected>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "frames/frame_source.h"
+#include "frames/sink.h"
+#include "recording/recording_writer.h"
+#include "stream/recording_switch.h"
+#include "stream/stream_control.h"
+#include "stream/stream_server.h"
+#include "vemd/sinks/recording_context.h"
+#include "vemd/vemd_config.h"
+
+namespace vem::vemd {
+
+// Where control's start_recording writes (see vemd_config.h, StreamConfig::recordDir).
+[[nodiscard]] std::filesystem::path controlRecordingFolder(const VemdConfig& config);
+
+// How the RecordingSwitch opens a recording: vemd's recorder with this header context and these
+// writer options; for an empty file name a new time-stamped file (recorder_sink.h,
+// recordingPathFor).
+[[nodiscard]] stream::OpenRecording recorderOpener(RecordingContext context,
+                                                   recording::WriterOptions options);
+
+struct Streaming {
+  std::unique_ptr<stream::StreamServer> server;    // null: streaming is off
+  std::unique_ptr<stream::StreamControl> control;  // null with it
+};
+
+// Starts the server and appends its sinks to `sinks`; an empty Streaming when disabled, or when
+// the port cannot be bound and output.allow_missing is set (logged).
+[[nodiscard]] std::expected<Streaming, std::string> startStreaming(
+    const VemdConfig& config, const SourceDescription& source,
+    std::vector<std::unique_ptr<Sink>>& sinks);
+
+}  // namespace vem::vemd
