@@ -32,6 +32,16 @@ if(VEM_TSAN)
   add_link_options(-fsanitize=thread)
 endif()
 
+# vem_per_frame_code(target): the per-pixel work vemd does every frame (the lighting core, the
+# calibration's remap, the stream's cube maps and texel packing) stays at -O1 in the sanitizer
+# builds, which .ci/run compiles at -O0 for speed: the end-to-end tests there check that clients
+# do not slow vemd below its rate, and at -O0 this code alone would. Still instrumented.
+function(vem_per_frame_code target)
+  if(VEM_SANITIZE OR VEM_TSAN)
+    target_compile_options(${target} PRIVATE -O1)
+  endif()
+endfunction()
+
 # Build time (issue 18: a cold CI under 45 minutes on 2 cores). Two measured levers, no effect on
 # what the code does:
 # - vem_unity_build(target batch): the target's sources compiled `batch` at a time in one
