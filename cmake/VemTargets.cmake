@@ -33,7 +33,8 @@ if(VEM_TSAN)
 endif()
 
 # vem_per_frame_code(target): the per-pixel work vemd does every frame (the lighting core, the
-# calibration's remap, the stream's cube maps and texel packing) stays at -O1 in the sanitizer
+# calibration's remap, the synthetic camera, the pipeline, the sinks and the recorder, the stream's
+# cube maps and texel packing) stays at -O1 in the sanitizer
 # builds, which .ci/run compiles at -O0 for speed: the end-to-end tests there check that clients
 # do not slow vemd below its rate, and at -O0 this code alone would. Still instrumented.
 function(vem_per_frame_code target)
