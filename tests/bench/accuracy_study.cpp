@@ -8,6 +8,7 @@
 #include "core/irradiance.h"
 #include "core/sampling_pattern.h"
 #include "core/sphere_points.h"
+#include "core/upper_hemisphere.h"
 #include "support/test_maps.h"
 
 namespace vem::bench {
@@ -21,7 +22,7 @@ double errorOf(const EnvMap& map, const SamplingTables& tables, std::span<const 
 }
 
 EnvMap inLayout(const EnvMap& equirect, MapLayout layout) {
-  return layout == MapLayout::Sphere ? equirect : testing::upperHemisphere(equirect);
+  return layout == MapLayout::Sphere ? equirect : upperHemisphere(equirect);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include "accuracy_study.h"
 #include "bench_fixtures.h"
 #include "machine_info.h"
-#include "svg_plot.h"
+#include "util/svg_plot.h"
 #include "vemd_benchmarks.h"
 
 namespace vem::bench {
@@ -137,11 +137,14 @@ void accuracyVersusTime(std::ostringstream& md, const ReportInputs& in,
   havran.marker = PlotMarker::Circle;
   standard.marker = PlotMarker::Square;
   standard.labelOffsetPx = {6.0, 14.0};
-  writeLogLogSvg(docsDir / "accuracy-vs-time.svg",
-                 {"Irradiance error of the N lights (not a render) against time per frame",
-                  "time per frame: importance tables plus N lights (us)",
-                  "irradiance error, relative RMS at 64 normals", true},
-                 {havran, standard}, PlotCanvas{760, 460});
+  if (!writeLogLogSvg(docsDir / "accuracy-vs-time.svg",
+                      {"Irradiance error of the N lights (not a render) against time per frame",
+                       "time per frame: importance tables plus N lights (us)",
+                       "irradiance error, relative RMS at 64 normals", true},
+                      {havran, standard}, PlotCanvas{760, 460})) {
+    md << "\n(The plot could not be written to " << (docsDir / "accuracy-vs-time.svg").string()
+       << ".)\n";
+  }
   md << "\n![irradiance error of the lights against time per frame](accuracy-vs-time.svg)\n\n"
         "Irradiance error of the lights against time per frame, log-log: the relative RMS "
         "difference between the irradiance the N lights give at 64 Fibonacci normals and exact "

@@ -9,6 +9,7 @@
 #include "core/irradiance.h"
 #include "core/light_generator.h"
 #include "core/sphere_points.h"
+#include "core/upper_hemisphere.h"
 #include "mapio/map_file.h"
 #include "support/test_maps.h"
 
@@ -53,7 +54,7 @@ TEST_P(SharedHdriAccuracy, HavranErrorConvergesOnEveryMapAndStaysNearTheStandard
     auto loaded = mapio::loadMap(path);
     ASSERT_TRUE(loaded) << loaded.error().message;
     const EnvMap map =
-        GetParam() == MapLayout::Sphere ? *loaded : testing::upperHemisphere(*loaded);
+        GetParam() == MapLayout::Sphere ? *loaded : upperHemisphere(*loaded);
     const Errors e = errorsOf(map);
     std::printf("%-10s %.4f/%.4f %.4f/%.4f %.4f/%.4f\n", path.stem().c_str(), e.havran[0],
                 e.standard[0], e.havran[1], e.standard[1], e.havran[2], e.standard[2]);

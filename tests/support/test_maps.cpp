@@ -52,10 +52,4 @@ std::vector<std::filesystem::path> sharedHdriPaths() {
   return paths;
 }
 
-EnvMap upperHemisphere(const EnvMap& equirect) {
-  EnvMap out{MapLayout::Hemisphere, equirect.width, equirect.height / 2, {}};
-  out.rgb.assign(equirect.rgb.begin(), equirect.rgb.begin() + std::ptrdiff_t(out.pixelCount() * 3));
-  return out;
-}
-
 }  // namespace vem::testing

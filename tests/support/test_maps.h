@@ -21,7 +21,5 @@ namespace vem::testing {
 
 // The shared HDRIs (VEM_SHARED_DATA_DIR/hdri/*.exr), sorted; empty when the folder is absent.
 [[nodiscard]] std::vector<std::filesystem::path> sharedHdriPaths();
-// The upper half of an equirectangular map as the camera's polar (hemisphere) map.
-[[nodiscard]] EnvMap upperHemisphere(const EnvMap& equirect);
 
 }  // namespace vem::testing

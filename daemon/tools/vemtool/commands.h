@@ -11,6 +11,7 @@ namespace vem::tool {
 
 void addLightsCommand(CLI::App& app, int& exitCode);   // lights_command.cpp
 void addFiltersCommand(CLI::App& app, int& exitCode);  // filters_command.cpp
+void addCoherenceCommand(CLI::App& app, int& exitCode);  // coherence_command.cpp
 void addInfoCommand(CLI::App& app, int& exitCode);     // info_command.cpp
 void addRecoverCommand(CLI::App& app, int& exitCode);  // recover_command.cpp
 void addSynthCommand(CLI::App& app, int& exitCode);    // synth_command.cpp

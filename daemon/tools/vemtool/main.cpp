@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   int exitCode = vem::cli::kExitSuccess;
   vem::tool::addLightsCommand(app, exitCode);
   vem::tool::addFiltersCommand(app, exitCode);
+  vem::tool::addCoherenceCommand(app, exitCode);
   vem::tool::addInfoCommand(app, exitCode);
   vem::tool::addRecoverCommand(app, exitCode);
   vem::tool::addSynthCommand(app, exitCode);

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "bench/render/render_report.h"
-#include "bench/svg_plot.h"
+#include "util/svg_plot.h"
 
 namespace vem::bench {
 namespace {
@@ -82,11 +82,13 @@ std::expected<void, std::string> writeAccuracyPlot(const std::filesystem::path& 
                                                    const std::vector<MapStudy>& studies) {
   std::filesystem::path svgPath = pngPath;
   svgPath.replace_extension(".svg");
-  writeLogLogSvg(svgPath,
-                 {"Render error against the Monte Carlo reference vs frame time (320 x 240)",
-                  "median frame time (ms)",
-                  "image error, relative RMS over the maps (geometric mean)", true},
-                 plotSeries(sweeps, studies), PlotCanvas{960, 640});
+  if (!writeLogLogSvg(svgPath,
+                      {"Render error against the Monte Carlo reference vs frame time (320 x 240)",
+                       "median frame time (ms)",
+                       "image error, relative RMS over the maps (geometric mean)", true},
+                      plotSeries(sweeps, studies), PlotCanvas{960, 640})) {
+    return std::unexpected(fmt::format("{}: could not write the plot.", svgPath.string()));
+  }
   const std::string command = fmt::format("rsvg-convert --format=png --output='{}' '{}'",
                                           pngPath.string(), svgPath.string());
   if (std::system(command.c_str()) != 0) {

@@ -1,4 +1,4 @@
-#include "svg_plot.h"
+#include "util/svg_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace vem::bench {
+namespace vem {
 namespace {
 constexpr double kLeft = 80, kRight = 40, kTop = 44, kBottom = 60;
 constexpr double kLegendCharPx = 7.5;  // a little over the width of a 12 px sans-serif character
@@ -53,7 +53,7 @@ std::string marker(PlotMarker kind, double x, double y, const char* colour, bool
 
 }  // namespace
 
-void writeLogLogSvg(const std::filesystem::path& path, const PlotText& text,
+bool writeLogLogSvg(const std::filesystem::path& path, const PlotText& text,
                     const std::vector<PlotSeries>& series, PlotCanvas canvas) {
   const double kWidth = canvas.widthPx, kHeight = canvas.heightPx;
   std::size_t longestName = 0;
@@ -133,6 +133,8 @@ void writeLogLogSvg(const std::filesystem::path& path, const PlotText& text,
       "<rect x='{:.1f}' y='{}' width='{:.1f}' height='{:.1f}' fill='white' stroke='#bbb'/>\n",
       legendX - 8, kTop + 4, kWidth - kRight - legendX + 6, 18 * double(series.size()) + 10);
   out << legend << "</svg>\n";
+  out.close();
+  return bool(out);
 }
 
-}  // namespace vem::bench
+}  // namespace vem

@@ -1,6 +1,7 @@
-// A small log-log line plot written as SVG (no plotting library in Debian's C++ packages fits a
-// benchmark report better than a few lines of SVG). A title names what is plotted; ticks are plain
-// numbers on a 1-2-5 scale (per cent on a per-cent axis), not powers of ten.
+// A small log-log line plot written as SVG, for the benchmark reports and `vemtool coherence` (no
+// plotting library in Debian's C++ packages fits a report better than a few lines of SVG). A title
+// names what is plotted; ticks are plain numbers on a 1-2-5 scale (per cent on a per-cent axis),
+// not powers of ten.
 #pragma once
 
 #include <filesystem>
@@ -8,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace vem::bench {
+namespace vem {
 
 enum class PlotMarker { Circle, Square, Triangle, Diamond };
 
@@ -38,8 +39,8 @@ struct PlotText {
   bool yPercent = false;  // y values are fractions, shown as per cent ("5 %")
 };
 
-// Up to 8 colours (then they repeat).
-void writeLogLogSvg(const std::filesystem::path& path, const PlotText& text,
+// Up to 8 colours (then they repeat). False when the file could not be written.
+[[nodiscard]] bool writeLogLogSvg(const std::filesystem::path& path, const PlotText& text,
                     const std::vector<PlotSeries>& series, PlotCanvas canvas = {});
 
-}  // namespace vem::bench
+}  // namespace vem

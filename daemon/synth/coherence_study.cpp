@@ -1,0 +1,98 @@
+#include "synth/coherence_study.h"
+
+#include <cmath>
+
+#include "core/default_pattern.h"
+#include "core/irradiance.h"
+#include "core/sampling_tables.h"
+#include "core/temporal_filter.h"
+#include "util/contract.h"
+
+namespace vem::synth {
+
+std::vector<std::vector<glm::dvec3>> exactIrradiance(std::span<const SequenceFrame> frames,
+                                                     std::span<const glm::dvec3> normals) {
+  std::vector<std::vector<glm::dvec3>> out;
+  out.reserve(frames.size());
+  for (const SequenceFrame& frame : frames) out.push_back(irradianceFromMap(frame.map, normals));
+  return out;
+}
+
+std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames, SamplerKind sampler,
+                                     std::size_t lightCount) {
+  std::vector<LightSet> out;
+  out.reserve(frames.size());
+  SamplingTables tables;
+  for (const SequenceFrame& frame : frames) {
+    tables = buildSamplingTables(frame.map, std::move(tables));
+    const auto pattern = defaultSamplingPattern(frame.map.layout).first(lightCount);
+    out.push_back(generateLights(frame.map, tables, pattern, sampler));
+  }
+  return out;
+}
+
+std::vector<LightSet> filterSequence(std::span<const LightSet> sets, FilterPreset preset) {
+  TemporalFilter filter(presetTaps(preset));
+  std::vector<LightSet> out;
+  out.reserve(sets.size());
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    FilterResult result = filter.push(k, sets[k]);
+    VEM_EXPECTS(result.lights.has_value());  // consecutive sequence numbers are never stale
+    out.push_back(std::move(*result.lights));
+  }
+  return out;
+}
+
+void CoherenceTally::add(const CoherenceTally& other) {
+  stepsDeg.insert(stepsDeg.end(), other.stepsDeg.begin(), other.stepsDeg.end());
+  lightsChangeSq += other.lightsChangeSq;
+  exactChangeSq += other.exactChangeSq;
+  excessChangeSq += other.excessChangeSq;
+  exactSq += other.exactSq;
+  errorSum += other.errorSum;
+  frames += other.frames;
+}
+
+CoherenceTally tallySequence(std::span<const SequenceFrame> frames, std::span<const LightSet> sets,
+                             std::span<const std::vector<glm::dvec3>> exact,
+                             std::span<const glm::dvec3> normals) {
+  VEM_EXPECTS(frames.size() == sets.size() && frames.size() == exact.size());
+  CoherenceTally t;
+  std::vector<double> previousLights;
+  std::vector<double> previousExact;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const auto fromLights = irradianceFromLights(sets[k].lights, normals);
+    t.errorSum += relativeRmsError(fromLights, exact[k]);
+    ++t.frames;
+    std::vector<double> lightsY = luminances(fromLights);
+    std::vector<double> exactY = luminances(exact[k]);
+    if (k > 0) {
+      appendAngularStepsDeg(sets[k - 1], sets[k], frames[k].motionFromPrevious, t.stepsDeg);
+      for (std::size_t n = 0; n < normals.size(); ++n) {
+        const double dLights = lightsY[n] - previousLights[n];
+        const double dExact = exactY[n] - previousExact[n];
+        t.lightsChangeSq += dLights * dLights;
+        t.exactChangeSq += dExact * dExact;
+        t.excessChangeSq += (dLights - dExact) * (dLights - dExact);
+        t.exactSq += exactY[n] * exactY[n];
+      }
+    }
+    previousLights = std::move(lightsY);
+    previousExact = std::move(exactY);
+  }
+  return t;
+}
+
+CoherenceFigures summarise(const CoherenceTally& t) {
+  CoherenceFigures f;
+  f.steps = summariseSteps(t.stepsDeg);
+  if (t.exactSq > 0.0) {
+    f.lightsFlicker = std::sqrt(t.lightsChangeSq / t.exactSq);
+    f.exactFlicker = std::sqrt(t.exactChangeSq / t.exactSq);
+    f.excessFlicker = std::sqrt(t.excessChangeSq / t.exactSq);
+  }
+  f.meanError = t.frames > 0 ? t.errorSum / double(t.frames) : 0.0;
+  return f;
+}
+
+}  // namespace vem::synth
