@@ -211,8 +211,11 @@ std::string writeReport(const ReportInputs& in, const std::filesystem::path& doc
         "build/stream.md`, `build/tests/bench/vem_render_bench` (the render study, also alone "
         "as `--target render-bench`: docs/render-accuracy.md, its plot and build/render.md), "
         "`VEM_SOAK_SECONDS=60 VEM_SOAK_REPORT=build/soak.md build/tests/soak/vem_soak_tests`, "
+        "`build/daemon/tools/vemtool/vemtool coherence --maps ../shared/data/hdri --plot "
+        "docs/coherence-accuracy-vs-flicker.svg > build/coherence.md`, "
         "then `build/tests/bench/vem_bench --benchmark_min_time=0.2 "
-        "--benchmark_repetitions=5 --include build/camera-latency.md --include build/stream.md "
+        "--benchmark_repetitions=5 --include build/coherence.md --include build/camera-latency.md "
+        "--include build/stream.md "
         "--include build/soak.md --include build/render.md --report docs/BENCHMARKS.md` (Release build, -O3; one thread except where a section says "
         "otherwise). Machine: "
      << machineDescription() << ". Do not edit by hand: rerun the command.\n\n";
