@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/color.h"
 #include "core/default_pattern.h"
 #include "core/irradiance.h"
 #include "core/sampling_tables.h"
@@ -19,14 +20,34 @@ std::vector<std::vector<glm::dvec3>> exactIrradiance(std::span<const SequenceFra
 }
 
 std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames, SamplerKind sampler,
-                                     std::size_t lightCount) {
+                                     std::size_t lightCount, double importanceWeight) {
+  VEM_EXPECTS(importanceWeight > 0.0 && importanceWeight <= 1.0);
   std::vector<LightSet> out;
   out.reserve(frames.size());
   SamplingTables tables;
+  EnvMap smoothed;
   for (const SequenceFrame& frame : frames) {
-    tables = buildSamplingTables(frame.map, std::move(tables));
     const auto pattern = defaultSamplingPattern(frame.map.layout).first(lightCount);
-    out.push_back(generateLights(frame.map, tables, pattern, sampler));
+    if (importanceWeight == 1.0) {
+      tables = buildSamplingTables(frame.map, std::move(tables));
+      out.push_back(generateLights(frame.map, tables, pattern, sampler));
+      continue;
+    }
+    if (smoothed.rgb.size() != frame.map.rgb.size()) {
+      smoothed = frame.map;
+    } else {
+      for (std::size_t i = 0; i < smoothed.rgb.size(); ++i) {
+        smoothed.rgb[i] = float(importanceWeight * double(frame.map.rgb[i]) +
+                                (1.0 - importanceWeight) * double(smoothed.rgb[i]));
+      }
+    }
+    tables = buildSamplingTables(smoothed, std::move(tables));
+    LightSet set = generateLights(frame.map, tables, pattern, sampler);
+    const double newest = luminance(radianceIntegralSr(frame.map));
+    const double scale = set.luminanceSr > 0.0 ? newest / set.luminanceSr : 0.0;
+    for (Light& light : set.lights) light.rgb *= float(scale);
+    set.luminanceSr = newest;
+    out.push_back(std::move(set));
   }
   return out;
 }

@@ -36,8 +36,13 @@ namespace vem::synth {
     std::span<const SequenceFrame> frames, std::span<const glm::dvec3> normals);
 
 // The first lightCount lights of the default pattern through `sampler`, every frame, unfiltered.
+// importanceWeight below 1 is issue 19's "smooth the importance in time" idea, as an experiment:
+// each frame's tables come from an exponential moving average of the maps (weight importanceWeight
+// on the newest), the lights' colours from the newest map, and their sum is scaled to the newest
+// map's luminance integral.
 [[nodiscard]] std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames,
-                                                   SamplerKind sampler, std::size_t lightCount);
+                                                   SamplerKind sampler, std::size_t lightCount,
+                                                   double importanceWeight = 1.0);
 
 // The sets through a fresh temporal filter with the preset's taps, frame k as sequence number k.
 [[nodiscard]] std::vector<LightSet> filterSequence(std::span<const LightSet> sets,

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/color.h"
+#include "core/sampling_tables.h"
 #include "core/sphere_points.h"
 #include "support/test_maps.h"
 
@@ -76,6 +78,24 @@ TEST(CoherenceStudy, NoiseFlickersTheLightsAndTheFilterSmoothsIt) {
   // The filter averages each light over 9 frames: smaller steps, less flicker.
   EXPECT_LT(filtered.figures.lightsFlicker, 0.8 * raw.figures.lightsFlicker);
   EXPECT_LT(filtered.figures.steps.medianDeg, raw.figures.steps.medianDeg);
+}
+
+TEST(CoherenceStudy, SmoothedImportanceHoldsTheLightsStillAndKeepsTheNewestPower) {
+  const EnvMap map = testing::proceduralSky(MapLayout::Hemisphere, 128, 32);
+  const auto frames = noisySequence(map, 0.03, 12, 5);
+  const auto normals = fibonacciSphere(64);
+  const auto exact = exactIrradiance(frames, normals);
+  const auto raw = sampleSequence(frames, SamplerKind::Havran, 64);
+  const auto smoothed = sampleSequence(frames, SamplerKind::Havran, 64, 0.25);
+  const CoherenceFigures rawFigures = summarise(tallySequence(frames, raw, exact, normals));
+  const CoherenceFigures smoothFigures = summarise(tallySequence(frames, smoothed, exact, normals));
+  EXPECT_LT(smoothFigures.steps.medianDeg, 0.6 * rawFigures.steps.medianDeg);
+  // The power is the newest map's, not the average's.
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    double sum = 0.0;
+    for (const Light& light : smoothed[k].lights) sum += luminance(light.rgb);
+    EXPECT_NEAR(sum / luminance(radianceIntegralSr(frames[k].map)), 1.0, 1e-5) << "frame " << k;
+  }
 }
 
 TEST(CoherenceStudy, TurningMapStepsAreMeasuredBeyondTheTurn) {

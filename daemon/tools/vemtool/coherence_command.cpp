@@ -40,6 +40,7 @@ struct CoherenceOptions {
   std::string plotPath;  // --plot: accuracy against flicker, SVG
   MapLayout layout = MapLayout::Hemisphere;
   std::size_t lightCount = 256;
+  double importanceWeight = 1.0;  // --importance-ema (an experiment of issue 19)
   int frames = 30;
   bool noScenes = false;
   std::vector<SamplerKind> samplers{SamplerKind::Havran, SamplerKind::Standard};
@@ -126,7 +127,7 @@ void measureInto(const std::vector<synth::SequenceFrame>& frames, const std::str
   const auto exact = synth::exactIrradiance(frames, normals);
   std::map<SamplerKind, synth::CoherenceTally> unfiltered;
   for (SamplerKind sampler : o.samplers) {
-    const auto sets = synth::sampleSequence(frames, sampler, o.lightCount);
+    const auto sets = synth::sampleSequence(frames, sampler, o.lightCount, o.importanceWeight);
     for (FilterPreset preset : o.filters) {
       const auto filtered = synth::filterSequence(sets, preset);
       synth::CoherenceTally t = synth::tallySequence(frames, filtered, exact, normals);
@@ -238,8 +239,9 @@ int runCoherence(const CoherenceOptions& o) {
 
   std::cout << fmt::format(
       "## Temporal coherence (vemtool coherence)\n\n"
-      "`vemtool coherence --maps {} --layout {} --lights {} --frames {}`\n\n",
-      o.mapsDir, layoutName(o.layout), o.lightCount, o.frames);
+      "`vemtool coherence --maps {} --layout {} --lights {} --frames {}{}`\n\n",
+      o.mapsDir, layoutName(o.layout), o.lightCount, o.frames,
+      o.importanceWeight < 1.0 ? fmt::format(" --importance-ema {:g}", o.importanceWeight) : "");
   std::cout << fmt::format(
       "Coherence: {} lights, {} layout, {} frames per sequence, {} maps from {}; steps in degrees "
       "between consecutive frames (beyond the true motion), flicker and error on irradiance at {} "
@@ -298,6 +300,11 @@ void addCoherenceCommand(CLI::App& app, int& exitCode) {
          [options](const std::string& name) { options->filters = {*presetFromName(name)}; },
          "One preset: none | paper9 | equiripple5 | minphase9 (default: all)")
       ->check(CLI::IsMember({"none", "paper9", "equiripple5", "minphase9"}));
+  cmd->add_option("--importance-ema", options->importanceWeight,
+                  "Experiment: tables from a moving average of the maps, this weight on the newest "
+                  "(1: none)")
+      ->type_name("0..1")
+      ->check(help::quiet(CLI::Range(1e-3, 1.0)));
   cmd->add_option("--plot", options->plotPath,
                   "Also write error against flicker per filter preset as an SVG plot")
       ->type_name("FILE.svg");
