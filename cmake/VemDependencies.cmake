@@ -11,7 +11,13 @@ find_package(tomlplusplus REQUIRED)              # libtomlplusplus-dev: calibrat
 find_package(nlohmann_json REQUIRED)             # nlohmann-json3-dev: JSON output
 find_package(spdlog REQUIRED)                    # libspdlog-dev: logging in the shells
 find_package(Protobuf REQUIRED)                  # libprotobuf-dev, protobuf-compiler: record metadata
-find_package(Boost REQUIRED)                     # libboost-dev (headers): Boost.CRC, the CRC32C oracle
+find_package(Boost REQUIRED)                     # libboost-dev (headers): Boost.CRC, the CRC32C oracle,
+                                                 # Boost.Beast and Asio (the stream's WebSocket)
+# Every unit that includes Beast sees the same string_view (std's): Beast's header-only classes
+# differ in layout between the two, and a program that links units compiled both ways breaks the
+# one-definition rule (the server's HTTP parser crashed in a test that linked a test client
+# compiled without it).
+add_compile_definitions(BOOST_BEAST_USE_STD_STRING_VIEW)
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)   # libzstd-dev: recorded pixels
 pkg_check_modules(ISAL REQUIRED IMPORTED_TARGET libisal)   # libisal-dev: fast CRC32C of records
 pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)  # libsystemd-dev: vemd's sd_notify

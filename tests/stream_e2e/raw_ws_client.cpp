@@ -35,15 +35,22 @@ bool RawWsClient::run(Start start, std::chrono::milliseconds timeout) {
     drop();
     ioc_.restart();
     ioc_.run();
+    lastError_ = "timed out";
     return false;
   }
+  lastError_ = error ? error.message() : "";
   return !error;
 }
 
 int RawWsClient::connect(std::uint16_t port, const RawConnectOptions& options) {
   beast::error_code ec;
   tcp::socket& socket = ws_.next_layer();
+  hello_.Clear();
   socket.open(tcp::v4(), ec);
+  if (!ec && !options.source.empty()) {
+    const auto local = asio::ip::make_address(options.source, ec);
+    if (!ec) socket.bind({local, 0}, ec);
+  }
   if (ec) return -1;
   if (options.receiveBufferBytes) {
     socket.set_option(asio::socket_base::receive_buffer_size(*options.receiveBufferBytes), ec);
@@ -59,13 +66,14 @@ int RawWsClient::connect(std::uint16_t port, const RawConnectOptions& options) {
   }
   ws_.binary(true);
   websocket::response_type response;
-  if (!run([&](auto done) { ws_.async_handshake(response, "127.0.0.1", "/", done); },
+  if (!run([&](auto done) { ws_.async_handshake(response, "127.0.0.1", options.target, done); },
            options.timeout)) {
     return response.result_int() != 0 ? int(response.result_int()) : -1;
   }
   const auto hello = readBytes(options.timeout);
   stream::ServerMessage message;
   if (!hello || !message.ParseFromString(*hello) || !message.has_hello()) return -1;
+  hello_ = std::move(message);
   return 0;
 }
 
@@ -74,7 +82,11 @@ bool RawWsClient::send(stream::ClientMessage message, std::chrono::milliseconds 
     message.set_protocol_major(stream::kProtocolMajor);
     message.set_protocol_minor(stream::kProtocolMinor);
   }
-  const std::string bytes = message.SerializeAsString();
+  return sendBytes(message.SerializeAsString(), true, timeout);
+}
+
+bool RawWsClient::sendBytes(const std::string& bytes, bool binary, std::chrono::milliseconds timeout) {
+  ws_.binary(binary);
   return run([&](auto done) { ws_.async_write(asio::buffer(bytes), done); }, timeout);
 }
 
@@ -84,9 +96,10 @@ std::optional<std::string> RawWsClient::readBytes(std::chrono::milliseconds time
   return beast::buffers_to_string(buffer_.cdata());
 }
 
-void RawWsClient::close(std::chrono::milliseconds timeout) {
+void RawWsClient::close(std::chrono::milliseconds timeout, const std::string& reason) {
   if (!ws_.is_open()) return;
-  (void)run([&](auto done) { ws_.async_close(websocket::close_code::normal, done); }, timeout);
+  const websocket::close_reason frame(websocket::close_code::normal, reason);
+  (void)run([&](auto done) { ws_.async_close(frame, done); }, timeout);
   drop();
 }
 
@@ -94,5 +107,9 @@ void RawWsClient::drop() {
   beast::error_code ignored;
   ws_.next_layer().close(ignored);
 }
+
+int RawWsClient::closeCode() const { return ws_.reason().code; }
+
+std::string RawWsClient::closeReason() const { return std::string(ws_.reason().reason.c_str()); }
 
 }  // namespace vem::e2e
