@@ -1,5 +1,6 @@
 #include "synth/coherence_study.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/color.h"
@@ -10,6 +11,27 @@
 #include "util/contract.h"
 
 namespace vem::synth {
+namespace {
+
+// One step of the (gated) moving average of the maps, pixel by pixel, into `average`.
+void smoothImportance(const EnvMap& newest, double weight, double gate, EnvMap& average) {
+  const std::size_t pixels = newest.rgb.size() / 3;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    float* avg = &average.rgb[3 * p];
+    const float* now = &newest.rgb[3 * p];
+    double w = weight;
+    if (gate > 0.0) {
+      const double yNow = luminance(glm::dvec3(now[0], now[1], now[2]));
+      const double yAvg = luminance(glm::dvec3(avg[0], avg[1], avg[2]));
+      const double larger = std::max(std::abs(yNow), std::abs(yAvg));
+      // A changed pixel, or a bad one (NaN compares false): the newest value.
+      if (!(std::abs(yNow - yAvg) <= gate * larger)) w = 1.0;
+    }
+    for (int c = 0; c < 3; ++c) avg[c] = float(w * double(now[c]) + (1.0 - w) * double(avg[c]));
+  }
+}
+
+}  // namespace
 
 std::vector<std::vector<glm::dvec3>> exactIrradiance(std::span<const SequenceFrame> frames,
                                                      std::span<const glm::dvec3> normals) {
@@ -20,8 +42,9 @@ std::vector<std::vector<glm::dvec3>> exactIrradiance(std::span<const SequenceFra
 }
 
 std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames, SamplerKind sampler,
-                                     std::size_t lightCount, double importanceWeight) {
-  VEM_EXPECTS(importanceWeight > 0.0 && importanceWeight <= 1.0);
+                                     std::size_t lightCount, double importanceWeight,
+                                     double importanceGate) {
+  VEM_EXPECTS(importanceWeight > 0.0 && importanceWeight <= 1.0 && importanceGate >= 0.0);
   std::vector<LightSet> out;
   out.reserve(frames.size());
   SamplingTables tables;
@@ -36,10 +59,7 @@ std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames, Samp
     if (smoothed.rgb.size() != frame.map.rgb.size()) {
       smoothed = frame.map;
     } else {
-      for (std::size_t i = 0; i < smoothed.rgb.size(); ++i) {
-        smoothed.rgb[i] = float(importanceWeight * double(frame.map.rgb[i]) +
-                                (1.0 - importanceWeight) * double(smoothed.rgb[i]));
-      }
+      smoothImportance(frame.map, importanceWeight, importanceGate, smoothed);
     }
     tables = buildSamplingTables(smoothed, std::move(tables));
     LightSet set = generateLights(frame.map, tables, pattern, sampler);

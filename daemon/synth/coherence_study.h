@@ -39,10 +39,14 @@ namespace vem::synth {
 // importanceWeight below 1 is issue 19's "smooth the importance in time" idea, as an experiment:
 // each frame's tables come from an exponential moving average of the maps (weight importanceWeight
 // on the newest), the lights' colours from the newest map, and their sum is scaled to the newest
-// map's luminance integral.
+// map's luminance integral. importanceGate > 0 gates that average by change: a pixel whose
+// luminance differs from its average by more than importanceGate (relative to the larger of the
+// two) takes the newest value at once, so that what moves or switches on is not dragged behind
+// while the sensor noise of what stands still is averaged away.
 [[nodiscard]] std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames,
                                                    SamplerKind sampler, std::size_t lightCount,
-                                                   double importanceWeight = 1.0);
+                                                   double importanceWeight = 1.0,
+                                                   double importanceGate = 0.0);
 
 // The sets through a fresh temporal filter with the preset's taps, frame k as sequence number k.
 [[nodiscard]] std::vector<LightSet> filterSequence(std::span<const LightSet> sets,

@@ -41,6 +41,7 @@ struct CoherenceOptions {
   MapLayout layout = MapLayout::Hemisphere;
   std::size_t lightCount = 256;
   double importanceWeight = 1.0;  // --importance-ema (an experiment of issue 19)
+  double importanceGate = 0.0;    // --importance-gate (with it)
   int frames = 30;
   bool noScenes = false;
   std::vector<SamplerKind> samplers{SamplerKind::Havran, SamplerKind::Standard};
@@ -127,7 +128,8 @@ void measureInto(const std::vector<synth::SequenceFrame>& frames, const std::str
   const auto exact = synth::exactIrradiance(frames, normals);
   std::map<SamplerKind, synth::CoherenceTally> unfiltered;
   for (SamplerKind sampler : o.samplers) {
-    const auto sets = synth::sampleSequence(frames, sampler, o.lightCount, o.importanceWeight);
+    const auto sets = synth::sampleSequence(frames, sampler, o.lightCount, o.importanceWeight,
+                                                 o.importanceGate);
     for (FilterPreset preset : o.filters) {
       const auto filtered = synth::filterSequence(sets, preset);
       synth::CoherenceTally t = synth::tallySequence(frames, filtered, exact, normals);
@@ -241,7 +243,8 @@ int runCoherence(const CoherenceOptions& o) {
       "## Temporal coherence (vemtool coherence)\n\n"
       "`vemtool coherence --maps {} --layout {} --lights {} --frames {}{}`\n\n",
       o.mapsDir, layoutName(o.layout), o.lightCount, o.frames,
-      o.importanceWeight < 1.0 ? fmt::format(" --importance-ema {:g}", o.importanceWeight) : "");
+      (o.importanceWeight < 1.0 ? fmt::format(" --importance-ema {:g}", o.importanceWeight) : "") +
+          (o.importanceGate > 0.0 ? fmt::format(" --importance-gate {:g}", o.importanceGate) : ""));
   std::cout << fmt::format(
       "Coherence: {} lights, {} layout, {} frames per sequence, {} maps from {}; steps in degrees "
       "between consecutive frames (beyond the true motion), flicker and error on irradiance at {} "
@@ -305,6 +308,11 @@ void addCoherenceCommand(CLI::App& app, int& exitCode) {
                   "(1: none)")
       ->type_name("0..1")
       ->check(help::quiet(CLI::Range(1e-3, 1.0)));
+  cmd->add_option("--importance-gate", options->importanceGate,
+                  "Experiment, with --importance-ema: a pixel whose luminance changed by more than "
+                  "this fraction takes the newest value (0: no gate)")
+      ->type_name("FRACTION")
+      ->check(help::quiet(CLI::Range(0.0, 1.0)));
   cmd->add_option("--plot", options->plotPath,
                   "Also write error against flicker per filter preset as an SVG plot")
       ->type_name("FILE.svg");
