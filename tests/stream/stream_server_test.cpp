@@ -103,8 +103,14 @@ TEST(StreamServer, SendTimeoutClosesAClientThatStoppedReading) {
   options.sendTimeout = std::chrono::milliseconds(200);
   options.maxClientLag = std::chrono::minutes(10);  // the send timeout, not the lag, closes it
   auto server = startServer(options);
-  WsTestClient stuck, reader;
-  ASSERT_EQ(stuck.connect(server->boundPort()), 0);
+  // The stuck client's receive buffer is small, so that the server's write stalls within a few
+  // frames whatever the kernel's buffer tuning (under ThreadSanitizer, after the tests before it,
+  // 4000 frames did not fill the default buffers).
+  e2e::RawWsClient stuck;
+  e2e::RawConnectOptions small;
+  small.receiveBufferBytes = 4096;
+  ASSERT_EQ(stuck.connect(server->boundPort(), small), 0);
+  WsTestClient reader;
   ASSERT_EQ(reader.connect(server->boundPort()), 0);
   std::uint64_t seq = 0;
   // Big frames until the stuck client's write has been pending past the timeout.
