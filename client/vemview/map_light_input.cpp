@@ -44,7 +44,7 @@ std::expected<std::unique_ptr<LightInput>, std::string> openMapInput(
   InputFrame frame;
   frame.seq = 1;
   frame.lights = std::make_shared<const LightSet>(generateLights(
-      *map, tables, defaultSamplingPattern(map->layout).first(count), SamplerKind::Havran));
+      tables, defaultSamplingPattern(map->layout).first(count), SamplerKind::Havran));
   if (options.cubeMap) {
     frame.cube =
         std::make_shared<const CubeMap>(cubeMapFromEnvMap(*map, options.cubeFacePx, kCubeLevels));

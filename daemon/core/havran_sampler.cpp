@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/color.h"
 #include "core/surface_parameterization.h"
 
 namespace vem {
@@ -12,11 +11,10 @@ namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-// Row coordinate r where the tent marginal's cumulative reaches `target` in [0, totalMass].
-double invertTentMarginal(const SamplingTables& t, double target) {
+// Row coordinate r where the tent marginal's cumulative reaches `target` in [0, totalMass], given
+// the segment [knot j, knot j + 1] of tentCdf that holds it.
+double invertTentMarginalIn(const SamplingTables& t, std::size_t j, double target) {
   const auto& cdf = t.tentCdf;
-  const auto it = std::upper_bound(cdf.begin() + 1, cdf.end() - 1, target);
-  const std::size_t j = std::size_t(it - cdf.begin()) - 1;  // segment [knot j, knot j + 1]
   const double delta = std::max(0.0, target - cdf[j]);
   const int h = t.height;
   if (j == 0) return std::min(0.5, delta / t.rowMass[0]);
@@ -28,6 +26,12 @@ double invertTentMarginal(const SamplingTables& t, double target) {
   const double b = t.rowMass[j];
   const double x = 2 * delta / (a + std::sqrt(std::max(0.0, a * a + 2 * (b - a) * delta)));
   return j - 0.5 + std::clamp(x, 0.0, 1.0);
+}
+
+double invertTentMarginal(const SamplingTables& t, double target) {
+  const auto& cdf = t.tentCdf;
+  const auto it = std::upper_bound(cdf.begin() + 1, cdf.end() - 1, target);
+  return invertTentMarginalIn(t, std::size_t(it - cdf.begin()) - 1, target);
 }
 
 // Cumulative of the tent marginal at row coordinate r.
@@ -59,6 +63,17 @@ RowBlend rowBlendAt(const SamplingTables& t, double r) {
   if (r >= t.height - 0.5) return {t.height - 1, t.height - 1, 0.0};
   const int y0 = int(r - 0.5);
   return {y0, y0 + 1, r - 0.5 - y0};
+}
+
+void havranRowCoords(const SamplingTables& t, std::span<const double> sAscending,
+                     std::span<double> rows) {
+  const auto& cdf = t.tentCdf;
+  std::size_t j = 0;  // the segment holding the target: targets ascend, so it only moves up
+  for (std::size_t i = 0; i < sAscending.size(); ++i) {
+    const double target = std::clamp(sAscending[i], 0.0, 1.0) * t.totalMass;
+    while (j + 2 < cdf.size() && cdf[j + 1] <= target) ++j;
+    rows[i] = invertTentMarginalIn(t, j, target);
+  }
 }
 
 MapSample havranSample(const SamplingTables& t, glm::dvec2 square) {
@@ -93,17 +108,6 @@ double havranPdfSr(const SamplingTables& t, glm::dvec3 dir) {
   const double oneMinusCosMax = t.layout == MapLayout::Sphere ? 2.0 : 1.0;
   const double dsDr = t.sEdges[std::size_t(y) + 1] - t.sEdges[std::size_t(y)];
   return densityRPsi / (oneMinusCosMax * dsDr);
-}
-
-BlendedPixel blendedPixelAt(const EnvMap& map, const SamplingTables& t, double r, double xc) {
-  const RowBlend rows = rowBlendAt(t, r);
-  const int x = std::clamp(int(xc), 0, t.width - 1);
-  const double w0 = (1 - rows.t) * t.pixelSolidAngleSr[std::size_t(rows.y0)];
-  const double w1 = rows.t * t.pixelSolidAngleSr[std::size_t(rows.y1)];
-  const glm::dvec3 grey(t.floorY);
-  const glm::dvec3 rgb =
-      w0 * (sanitizedRgb(map, x, rows.y0) + grey) + w1 * (sanitizedRgb(map, x, rows.y1) + grey);
-  return {rgb, luminance(rgb)};
 }
 
 }  // namespace vem

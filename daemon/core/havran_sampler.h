@@ -17,6 +17,8 @@
 // (sphere); the map's azimuth follows xc (env_map.h).
 #pragma once
 
+#include <span>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -32,6 +34,11 @@ struct MapSample {
 };
 
 [[nodiscard]] MapSample havranSample(const SamplingTables& tables, glm::dvec2 square);
+// For each s of `sAscending` (fractions of the mass in [0, 1], ascending), the row coordinate r in
+// [0, H] where the tent marginal reaches it: where havranSample takes square points whose cylinder
+// coordinate is s. One pass up the marginal; `rows` has the size of `sAscending`.
+void havranRowCoords(const SamplingTables& tables, std::span<const double> sAscending,
+                     std::span<double> rows);
 // Inverse: the square point that lands on `dir` (dir in the map's domain).
 [[nodiscard]] glm::dvec2 havranSquare(const SamplingTables& tables, glm::dvec3 dir);
 // Density of havranSample's directions per steradian (0 outside the map's domain).
@@ -44,14 +51,5 @@ struct RowBlend {
   double t = 0.0;
 };
 [[nodiscard]] RowBlend rowBlendAt(const SamplingTables& tables, double r);
-
-// The interpolated (rgb, luminance) mass density of the map at (r, xc), floor included: what the
-// Havran sampler's density is proportional to, and the colour a light sampled there carries.
-struct BlendedPixel {
-  glm::dvec3 rgb{0.0};
-  double luminance = 0.0;
-};
-[[nodiscard]] BlendedPixel blendedPixelAt(const EnvMap& map, const SamplingTables& tables, double r,
-                                          double xc);
 
 }  // namespace vem

@@ -1,47 +1,66 @@
 #include "core/light_generator.h"
 
-#include "core/color.h"
+#include <vector>
+
 #include "core/havran_sampler.h"
 #include "core/standard_sampler.h"
+#include "core/surface_parameterization.h"
+#include "util/contract.h"
 
 namespace vem {
-namespace {
-
-// The colour per unit luminance at a sample; grey where the map is black there.
-glm::dvec3 chromaAt(const EnvMap& map, const SamplingTables& t, const MapSample& s,
-                    SamplerKind kind) {
-  BlendedPixel p;
-  if (kind == SamplerKind::Havran) {
-    p = blendedPixelAt(map, t, s.r, s.xc);
-  } else {
-    const int x = std::min(int(s.xc), t.width - 1);
-    const int y = std::min(int(s.r), t.height - 1);
-    p.rgb = sanitizedRgb(map, x, y) + glm::dvec3(t.floorY);
-    p.luminance = luminance(p.rgb);
-  }
-  return p.luminance > 0 ? p.rgb / p.luminance : glm::dvec3(1.0);
-}
-
-}  // namespace
 
 const char* samplerName(SamplerKind kind) {
   return kind == SamplerKind::Havran ? "havran" : "standard";
 }
 
-LightSet generateLights(const EnvMap& map, const SamplingTables& t,
-                        std::span<const glm::dvec2> pattern, SamplerKind kind) {
+LightCells lightCellsFor(MapLayout layout, std::span<const glm::dvec2> pattern, SamplerKind kind) {
+  std::vector<glm::dvec2> warp(pattern.begin(), pattern.end());
+  if (kind == SamplerKind::Havran) {
+    for (glm::dvec2& p : warp) {
+      const CylinderPoint c = cylinderFromSquare(layout, p);
+      p = {c.s, c.w};
+    }
+  }
+  return buildLightCells(warp);
+}
+
+LightSet generateLights(const SamplingTables& t, std::span<const glm::dvec2> pattern,
+                        SamplerKind kind, const LightCells& cells) {
+  VEM_EXPECTS(cells.count == pattern.size());
   LightSet set;
   set.luminanceSr = t.luminanceSr;
   set.black = t.black;
   set.lights.reserve(pattern.size());
-  const double share = t.black ? 0.0 : t.luminanceSr / double(pattern.size());
+  // Each light: its share of the luminance, luminanceSr / N, in its cell's colour (light_cells.h).
+  std::vector<glm::dvec3> radiance;
+  if (!t.black) {
+    std::vector<double> edgeRows(cells.aEdges.size());
+    if (kind == SamplerKind::Havran) {
+      havranRowCoords(t, cells.aEdges, edgeRows);
+    } else {
+      standardRowCoords(t, cells.aEdges, edgeRows);
+    }
+    std::vector<glm::dvec2> rows(cells.cells.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      rows[k] = {edgeRows[cells.cells[k].a0Edge], edgeRows[cells.cells[k].a1Edge]};
+    }
+    radiance = cellRadianceSr(
+        t, cells, rows, kind == SamplerKind::Havran ? RowWeighting::Tent : RowWeighting::Box);
+  }
+  // Scaled from the floor-included importance to the map's luminance: sum of luminances = luminanceSr.
+  const double scale = t.black ? 0.0 : t.luminanceSr / t.totalMass;
   for (std::size_t i = 0; i < pattern.size(); ++i) {
     const MapSample s =
         kind == SamplerKind::Havran ? havranSample(t, pattern[i]) : standardSample(t, pattern[i]);
-    const glm::dvec3 rgb = share * chromaAt(map, t, s, kind);
+    const glm::dvec3 rgb = t.black ? glm::dvec3(0.0) : scale * radiance[i];
     set.lights.push_back({std::uint32_t(i), glm::vec3(s.dir), glm::vec3(rgb)});
   }
   return set;
+}
+
+LightSet generateLights(const SamplingTables& t, std::span<const glm::dvec2> pattern,
+                        SamplerKind kind) {
+  return generateLights(t, pattern, kind, lightCellsFor(t.layout, pattern, kind));
 }
 
 }  // namespace vem

@@ -17,7 +17,7 @@ void resizeFor(SamplingTables& t, const EnvMap& map) {
   t.height = map.height;
   t.blocksPerRow = (map.width + kColumnBlock - 1) / kColumnBlock;
   t.pixelLuminance.resize(map.pixelCount());
-  t.blockCumulativeY.resize(std::size_t(map.height) * std::size_t(t.blocksPerRow + 1));
+  t.blockCumulativeYRgb.resize(4 * std::size_t(map.height) * std::size_t(t.blocksPerRow + 1));
   t.pixelSolidAngleSr.resize(std::size_t(map.height));
   t.sEdges.resize(std::size_t(map.height) + 1);
   t.rowMass.resize(std::size_t(map.height));
@@ -35,6 +35,15 @@ inline float pixelLuminance(const float* rgb, unsigned& bad) {
   return good ? y : 0.0F;
 }
 
+// Adds the pixel's rgb to sums[0..3) if pixelLuminance() keeps it.
+inline void addIfGood(const float* rgb, float* sums) {
+  unsigned bad = 0;
+  pixelLuminance(rgb, bad);
+  if (bad == 0) {
+    for (int c = 0; c < 3; ++c) sums[c] += rgb[c];
+  }
+}
+
 // Four pixels at a time with GCC's generic vectors (SSE2 on x86-64, NEON on ARM): the interleaved
 // RGB of four pixels is split into R, G and B lanes, and the same test as pixelLuminance() keeps or
 // zeroes each pixel. The scalar loop costs about 24 instructions a pixel; this, about 8.
@@ -49,8 +58,16 @@ inline Float4 loadFloat4(const float* p) {
   return v;
 }
 
-// Luminances of pixels rgb[0..3] (12 floats); subtracts 1 from `goodLanes` for each good pixel.
-inline Float4 luminance4(const float* rgb, Int4& goodLanes) {
+// Per channel, four lanes of sums.
+struct Rgb4 {
+  Float4 r{0, 0, 0, 0};
+  Float4 g{0, 0, 0, 0};
+  Float4 b{0, 0, 0, 0};
+};
+
+// Luminances of pixels rgb[0..3] (12 floats); subtracts 1 from `goodLanes` for each good pixel and
+// adds all four pixels' channels to `sums` (the caller sums a block with a bad pixel again).
+inline Float4 luminance4(const float* rgb, Int4& goodLanes, Rgb4& sums) {
   const Float4 a = loadFloat4(rgb), b = loadFloat4(rgb + 4), c = loadFloat4(rgb + 8);
   // a = r0 g0 b0 r1, b = g1 b1 r2 g2, c = b2 r3 g3 b3
   const Float4 ab0 = __builtin_shuffle(a, b, Int4{0, 3, 6, 0});
@@ -64,35 +81,54 @@ inline Float4 luminance4(const float* rgb, Int4& goodLanes) {
   const Float4 lowest = smallest < bl ? smallest : bl;
   const Int4 good = (lowest >= 0.0F) & (y <= std::numeric_limits<float>::max());  // -1 where good
   goodLanes += good;
+  sums.r += r;
+  sums.g += g;
+  sums.b += bl;
   return good ? y : Float4{0, 0, 0, 0};
 }
 
-// One row in one pass: each pixel's luminance into `luminance`, and the sums at block edges into
-// `blockSums` (blocksPerRow + 1 entries, in double). Returns the number of bad pixels.
-std::size_t accumulateRow(const float* rgb, int width, float* luminance, double* blockSums) {
+inline float laneSum(Float4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
+
+// One row in one pass: each pixel's luminance into `luminance`, the sums at block edges into
+// `yRgbSums` (4 per edge: the luminance and the rgb, in double). Returns the number of bad pixels.
+std::size_t accumulateRow(const float* rgb, int width, float* luminance, double* yRgbSums) {
   unsigned bad = 0;
   double base = 0;
-  blockSums[0] = 0;
+  yRgbSums[0] = yRgbSums[1] = yRgbSums[2] = yRgbSums[3] = 0;
   int block = 0;
   for (int first = 0; first < width; first += kColumnBlock) {
     const int last = std::min(width, first + kColumnBlock);
     Double2 sumLow{0, 0}, sumHigh{0, 0};  // four chains of additions instead of one long one
     Int4 goodLanes{0, 0, 0, 0};
+    Rgb4 channels;
     int x = first;
     for (; x + 4 <= last; x += 4) {
-      const Float4 y = luminance4(rgb + 3 * x, goodLanes);
+      const Float4 y = luminance4(rgb + 3 * x, goodLanes, channels);
       std::memcpy(luminance + x, &y, sizeof y);
       sumLow += __builtin_convertvector(Float2{y[0], y[1]}, Double2);
       sumHigh += __builtin_convertvector(Float2{y[2], y[3]}, Double2);
     }
-    bad += unsigned((x - first) + goodLanes[0] + goodLanes[1] + goodLanes[2] + goodLanes[3]);
+    const unsigned badInVectors =
+        unsigned((x - first) + goodLanes[0] + goodLanes[1] + goodLanes[2] + goodLanes[3]);
+    bad += badInVectors;
+    float tailRgb[3] = {0, 0, 0};
+    if (badInVectors > 0) {  // rare: the block's colour again, without its bad pixels
+      channels = Rgb4{};
+      for (int p = first; p < x; ++p) addIfGood(rgb + 3 * p, tailRgb);
+    }
     double tail = 0;
     for (; x < last; ++x) {
       luminance[x] = pixelLuminance(rgb + 3 * x, bad);
       tail += double(luminance[x]);
+      addIfGood(rgb + 3 * x, tailRgb);
     }
     base += ((sumLow[0] + sumLow[1]) + (sumHigh[0] + sumHigh[1])) + tail;
-    blockSums[++block] = base;
+    double* sums = yRgbSums + 4 * block;
+    sums[4] = base;
+    sums[5] = sums[1] + double(laneSum(channels.r) + tailRgb[0]);
+    sums[6] = sums[2] + double(laneSum(channels.g) + tailRgb[1]);
+    sums[7] = sums[3] + double(laneSum(channels.b) + tailRgb[2]);
+    ++block;
   }
   return bad;
 }
@@ -109,11 +145,7 @@ void buildMarginals(SamplingTables& t) {
   const int h = t.height;
   t.boxCdf[0] = 0;
   for (int y = 0; y < h; ++y) {
-    t.rowMass[std::size_t(y)] =
-        t.pixelSolidAngleSr[std::size_t(y)] *
-        (t.blockCumulativeY[std::size_t(y) * std::size_t(t.blocksPerRow + 1) +
-                            std::size_t(t.blocksPerRow)] +
-         t.width * t.floorY);
+    t.rowMass[std::size_t(y)] = t.pixelSolidAngleSr[std::size_t(y)] * t.massAtBlock(y, t.blocksPerRow);
     t.boxCdf[std::size_t(y) + 1] = t.boxCdf[std::size_t(y)] + t.rowMass[std::size_t(y)];
   }
   // Tent marginal: half a row of constant density at each end, trapezoids between row centres.
@@ -145,22 +177,32 @@ SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled) {
     const double omega = pixelSolidAngleSr(map.layout, map.width, map.height, y);
     t.pixelSolidAngleSr[std::size_t(y)] = omega;
     const std::size_t row = std::size_t(y);
-    double* blockSums = &t.blockCumulativeY[row * std::size_t(t.blocksPerRow + 1)];
+    double* sums = &t.blockCumulativeYRgb[4 * row * std::size_t(t.blocksPerRow + 1)];
     t.badPixels += accumulateRow(&map.rgb[3 * row * std::size_t(map.width)], map.width,
-                                 &t.pixelLuminance[row * std::size_t(map.width)], blockSums);
-    t.luminanceSr += omega * blockSums[t.blocksPerRow];
+                                 &t.pixelLuminance[row * std::size_t(map.width)], sums);
+    t.luminanceSr += omega * sums[4 * std::size_t(t.blocksPerRow)];
   }
   t.black = !(t.luminanceSr > 0);
   // Uniform importance for a black map; otherwise a floor far below anything that matters.
   t.floorY = t.black ? 1.0 : kFloorFraction * t.luminanceSr / coveredSolidAngleSr(map.layout);
+  // The floor into the sums (as grey into the rgb): the samplers and the cells read it in.
+  const std::size_t edges = std::size_t(t.blocksPerRow + 1);
+  std::vector<double> floorAtEdge(4 * edges);
+  for (std::size_t b = 0; b < edges; ++b) {
+    const double floor = double(std::min(t.width, int(b) * kColumnBlock)) * t.floorY;
+    for (std::size_t c = 0; c < 4; ++c) floorAtEdge[4 * b + c] = floor;
+  }
+  for (std::size_t row = 0; row < std::size_t(t.height); ++row) {
+    double* sums = &t.blockCumulativeYRgb[4 * row * edges];
+    for (std::size_t i = 0; i < 4 * edges; ++i) sums[i] += floorAtEdge[i];
+  }
   buildMarginals(t);
   return t;
 }
 
 double SamplingTables::cumulativeY(int y, int x) const {
   const int block = x / kColumnBlock;
-  double sum =
-      blockCumulativeY[std::size_t(y) * std::size_t(blocksPerRow + 1) + std::size_t(block)];
+  double sum = massAtBlock(y, block) - std::min(width, block * kColumnBlock) * floorY;
   const float* row = &pixelLuminance[std::size_t(y) * std::size_t(width)];
   for (int i = block * kColumnBlock; i < x; ++i) sum += double(row[i]);
   return sum;
@@ -175,13 +217,8 @@ double blendedPixel(const SamplingTables& t, const RowPair& rows, int x) {
 
 // The blended cumulative at the edge of block b (column kColumnBlock b, or the row's end).
 double blendedAtBlock(const SamplingTables& t, const RowPair& rows, int block) {
-  const std::size_t stride = std::size_t(t.blocksPerRow + 1);
-  const int column = std::min(t.width, block * kColumnBlock);
-  const double floorMass = column * t.floorY;
-  return rows.weight0 * (t.blockCumulativeY[std::size_t(rows.row0) * stride + std::size_t(block)] +
-                         floorMass) +
-         rows.weight1 *
-             (t.blockCumulativeY[std::size_t(rows.row1) * stride + std::size_t(block)] + floorMass);
+  return rows.weight0 * t.massAtBlock(rows.row0, block) +
+         rows.weight1 * t.massAtBlock(rows.row1, block);
 }
 
 }  // namespace

@@ -40,9 +40,12 @@ struct SamplingTables {
   int height = 0;
   int blocksPerRow = 0;               // ceil(width / kColumnBlock)
   std::vector<float> pixelLuminance;  // per pixel, sanitised, no floor; row-major
-  // Per row y, the luminance summed over columns [0, kColumnBlock b) at y * (blocksPerRow + 1) + b,
-  // the last entry of a row being the whole row (no floor).
-  std::vector<double> blockCumulativeY;
+  // Per row y, the luminance and the rgb summed over columns [0, kColumnBlock b) in double
+  // (sanitised, the floor included, as grey in the rgb), side by side at
+  // 4 (y * (blocksPerRow + 1) + b) + {0: luminance, 1-3: r, g, b}, b = blocksPerRow being the whole
+  // row: the samplers' importance at block edges, and the colour the lights' cells integrate
+  // (light_cells.h), one edge's sums in one cache line.
+  std::vector<double> blockCumulativeYRgb;
   std::vector<double> pixelSolidAngleSr;  // per row
   std::vector<double> sEdges;             // height + 1 area coordinates of the row edges
   std::vector<double> rowMass;            // per row: solid angle x (luminance sum + width x floor)
@@ -60,6 +63,12 @@ struct SamplingTables {
   // Luminance of column x in row y, floor included.
   [[nodiscard]] double pixelY(int y, int x) const {
     return double(pixelLuminance[std::size_t(y) * std::size_t(width) + std::size_t(x)]) + floorY;
+  }
+  // The importance of row y over its first `block` blocks: luminance, floor included, no solid
+  // angle.
+  [[nodiscard]] double massAtBlock(int y, int block) const {
+    return blockCumulativeYRgb[4 * (std::size_t(y) * std::size_t(blocksPerRow + 1) +
+                                    std::size_t(block))];
   }
   // Luminance of row y summed over columns [0, x), no floor (O(kColumnBlock)).
   [[nodiscard]] double cumulativeY(int y, int x) const;
@@ -87,7 +96,8 @@ struct RowPair {
 [[nodiscard]] SamplingTables buildSamplingTables(const EnvMap& map, SamplingTables recycled = {});
 
 // The integral of the map's (sanitised) rgb over solid angle, per channel (map units x sr): what
-// the lights' rgb sum to. Not part of the per-frame tables (the lights need only the luminance).
+// the lights' rgb sum to (to the floor's share, kFloorFraction). A check for tests and tools; the
+// lights themselves integrate SamplingTables::blockCumulativeYRgb over their cells.
 [[nodiscard]] glm::dvec3 radianceIntegralSr(const EnvMap& map);
 
 // A pixel's rgb, or 0 when a channel is NaN, infinite or negative.

@@ -14,12 +14,35 @@ double invertRow(const SamplingTables& t, int y, double v) {
 
 }  // namespace
 
-MapSample standardSample(const SamplingTables& t, glm::dvec2 square) {
-  const double target = square.x * t.totalMass;
+namespace {
+
+// The row coordinate of `target` in [0, totalMass] in row y, the row whose mass holds it.
+double rowCoordIn(const SamplingTables& t, std::size_t y, double target) {
+  const double within = (target - t.boxCdf[y]) / t.rowMass[y];
+  return double(y) + std::clamp(within, 0.0, 1.0);
+}
+
+double standardRowCoord(const SamplingTables& t, double u) {
+  const double target = std::clamp(u, 0.0, 1.0) * t.totalMass;
   const auto it = std::upper_bound(t.boxCdf.begin() + 1, t.boxCdf.end() - 1, target);
-  const int y = int(it - t.boxCdf.begin()) - 1;
-  const double within = (target - t.boxCdf[std::size_t(y)]) / t.rowMass[std::size_t(y)];
-  const double r = y + std::clamp(within, 0.0, 1.0);
+  return rowCoordIn(t, std::size_t(it - t.boxCdf.begin()) - 1, target);
+}
+
+}  // namespace
+
+void standardRowCoords(const SamplingTables& t, std::span<const double> uAscending,
+                       std::span<double> rows) {
+  std::size_t y = 0;  // targets ascend, so the row only moves down
+  for (std::size_t i = 0; i < uAscending.size(); ++i) {
+    const double target = std::clamp(uAscending[i], 0.0, 1.0) * t.totalMass;
+    while (y + 2 < t.boxCdf.size() && t.boxCdf[y + 1] <= target) ++y;
+    rows[i] = rowCoordIn(t, y, target);
+  }
+}
+
+MapSample standardSample(const SamplingTables& t, glm::dvec2 square) {
+  const double r = standardRowCoord(t, square.x);
+  const int y = std::min(int(r), t.height - 1);
   double xc = invertRow(t, y, square.y);
   if (xc >= t.width) xc -= t.width;
   return {directionFromMapCoords(t, r, xc), r, xc};

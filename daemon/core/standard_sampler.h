@@ -6,6 +6,8 @@
 // wherever u crosses a row boundary.
 #pragma once
 
+#include <span>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -15,6 +17,11 @@
 namespace vem {
 
 [[nodiscard]] MapSample standardSample(const SamplingTables& tables, glm::dvec2 square);
+// For each u of `uAscending` (fractions of the mass in [0, 1], ascending), the row coordinate r in
+// [0, H] where the box marginal reaches it: where standardSample takes square points (u, v). One
+// pass down the marginal; `rows` has the size of `uAscending`.
+void standardRowCoords(const SamplingTables& tables, std::span<const double> uAscending,
+                       std::span<double> rows);
 [[nodiscard]] glm::dvec2 standardSquare(const SamplingTables& tables, glm::dvec3 dir);
 [[nodiscard]] double standardPdfSr(const SamplingTables& tables, glm::dvec3 dir);
 

@@ -49,11 +49,13 @@ std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames, Samp
   out.reserve(frames.size());
   SamplingTables tables;
   EnvMap smoothed;
+  LightCells cells;
   for (const SequenceFrame& frame : frames) {
     const auto pattern = defaultSamplingPattern(frame.map.layout).first(lightCount);
+    if (cells.count != pattern.size()) cells = lightCellsFor(frame.map.layout, pattern, sampler);
     if (importanceWeight == 1.0) {
       tables = buildSamplingTables(frame.map, std::move(tables));
-      out.push_back(generateLights(frame.map, tables, pattern, sampler));
+      out.push_back(generateLights(tables, pattern, sampler, cells));
       continue;
     }
     if (smoothed.rgb.size() != frame.map.rgb.size()) {
@@ -62,7 +64,8 @@ std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames, Samp
       smoothImportance(frame.map, importanceWeight, importanceGate, smoothed);
     }
     tables = buildSamplingTables(smoothed, std::move(tables));
-    LightSet set = generateLights(frame.map, tables, pattern, sampler);
+    // The lights' colours come from their cells in the smoothed map, their power from the newest.
+    LightSet set = generateLights(tables, pattern, sampler, cells);
     const double newest = luminance(radianceIntegralSr(frame.map));
     const double scale = set.luminanceSr > 0.0 ? newest / set.luminanceSr : 0.0;
     for (Light& light : set.lights) light.rgb *= float(scale);

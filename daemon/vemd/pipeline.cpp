@@ -160,7 +160,11 @@ void Pipeline::calibrate(const RawFrame& frame) {
 
 void Pipeline::sample() {
   const auto pattern = defaultSamplingPattern(MapLayout::Hemisphere).first(options_.lightCount);
-  result_.lights = generateLights(polar_, tables_, pattern, options_.sampler);
+  if (cells_.count != pattern.size() || cellsSampler_ != options_.sampler) {
+    cells_ = lightCellsFor(MapLayout::Hemisphere, pattern, options_.sampler);
+    cellsSampler_ = options_.sampler;
+  }
+  result_.lights = generateLights(tables_, pattern, options_.sampler, cells_);
 }
 
 // The filter's output stands for the frame delayFrames() ago; a stale seq publishes nothing.

@@ -100,6 +100,9 @@ class Pipeline final : public PipelineControl {
   std::uint64_t lutRebuilds_ = 0;
   EnvMap polar_;
   SamplingTables tables_;
+  // The lights' cells (light_cells.h): rebuilt only when the light count or the sampler changes.
+  LightCells cells_;
+  SamplerKind cellsSampler_ = SamplerKind::Havran;
   TemporalFilter filter_;
   ClusteringParams clusteringParams_;
   ProcessedFrame result_;

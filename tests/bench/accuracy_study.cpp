@@ -14,10 +14,10 @@
 namespace vem::bench {
 namespace {
 
-double errorOf(const EnvMap& map, const SamplingTables& tables, std::span<const glm::dvec2> pattern,
+double errorOf(const SamplingTables& tables, std::span<const glm::dvec2> pattern,
                SamplerKind kind, const std::vector<glm::dvec3>& reference) {
   static const auto normals = fibonacciSphere(64);
-  const LightSet lights = generateLights(map, tables, pattern, kind);
+  const LightSet lights = generateLights(tables, pattern, kind);
   return relativeRmsError(irradianceFromLights(lights.lights, normals), reference);
 }
 
@@ -37,8 +37,8 @@ std::vector<MapErrors> perMapErrors(const std::vector<std::size_t>& counts, MapL
     MapErrors row{name, {}, {}};
     for (std::size_t n : counts) {
       const auto pattern = defaultSamplingPattern(layout).first(n);
-      row.havran.push_back(errorOf(map, tables, pattern, SamplerKind::Havran, reference));
-      row.standard.push_back(errorOf(map, tables, pattern, SamplerKind::Standard, reference));
+      row.havran.push_back(errorOf(tables, pattern, SamplerKind::Havran, reference));
+      row.standard.push_back(errorOf(tables, pattern, SamplerKind::Standard, reference));
     }
     rows.push_back(std::move(row));
   }
@@ -66,9 +66,9 @@ std::vector<PatternErrors> patternComparison(const std::vector<std::size_t>& cou
       for (std::size_t k = 0; k < counts.size(); ++k) {
         const std::span<const glm::dvec2> pattern(points.data(), counts[k]);
         const double maps = double(sharedHdris().size());
-        row.havranMean[k] += errorOf(map, tables, pattern, SamplerKind::Havran, reference) / maps;
+        row.havranMean[k] += errorOf(tables, pattern, SamplerKind::Havran, reference) / maps;
         row.standardMean[k] +=
-            errorOf(map, tables, pattern, SamplerKind::Standard, reference) / maps;
+            errorOf(tables, pattern, SamplerKind::Standard, reference) / maps;
       }
     }
     result.push_back(std::move(row));
@@ -89,7 +89,7 @@ void registerAccuracyTimingBenchmarks(const std::vector<std::size_t>& counts) {
               const EnvMap& map = maps[next++ % maps.size()].map;
               tables = buildSamplingTables(map, std::move(tables));
               benchmark::DoNotOptimize(
-                  generateLights(map, tables, defaultSamplingPattern(map.layout).first(n), kind));
+                  generateLights(tables, defaultSamplingPattern(map.layout).first(n), kind));
             }
           })
           ->Unit(benchmark::kMicrosecond);

@@ -30,7 +30,7 @@ struct Pipeline {
   explicit Pipeline(const StageConfig& c)
       : map(testing::proceduralSky(MapLayout::Hemisphere, c.width, c.height)),
         tables(buildSamplingTables(map)),
-        lights(generateLights(map, tables, defaultSamplingPattern(map.layout).first(c.lights),
+        lights(generateLights(tables, defaultSamplingPattern(map.layout).first(c.lights),
                               SamplerKind::Havran)) {}
 };
 
@@ -54,10 +54,13 @@ void registerStageBenchmarks() {
       for (auto _ : s) p->tables = buildSamplingTables(p->map, std::move(p->tables));
     });
     for (SamplerKind kind : {SamplerKind::Havran, SamplerKind::Standard}) {
+      // As vemd does: the cells built once per light count, outside the loop.
+      const auto cells =
+          std::make_shared<const LightCells>(lightCellsFor(MapLayout::Hemisphere, pattern, kind));
       registerStage(std::string("lights_") + samplerName(kind), i,
-                    [p, pattern, kind](benchmark::State& s) {
+                    [p, pattern, kind, cells](benchmark::State& s) {
                       for (auto _ : s)
-                        benchmark::DoNotOptimize(generateLights(p->map, p->tables, pattern, kind));
+                        benchmark::DoNotOptimize(generateLights(p->tables, pattern, kind, *cells));
                     });
     }
     registerStage("fir", i, [p](benchmark::State& s) {
@@ -73,15 +76,17 @@ void registerStageBenchmarks() {
     });
     // The capture chain, what vemd does per frame: tables, lights, FIR, clustering; and the same
     // plus the angular regions, which the renderer builds from each light set.
+    const auto cells = std::make_shared<const LightCells>(
+        lightCellsFor(MapLayout::Hemisphere, pattern, SamplerKind::Havran));
     for (const bool withRegions : {false, true}) {
       registerStage(withRegions ? "chain_regions" : "chain", i,
-                    [p, pattern, withRegions](benchmark::State& s) {
+                    [p, pattern, cells, withRegions](benchmark::State& s) {
                       TemporalFilter filter(presetTaps(FilterPreset::Paper9));
                       std::uint64_t seq = 0;
                       for (auto _ : s) {
                         p->tables = buildSamplingTables(p->map, std::move(p->tables));
                         const LightSet raw =
-                            generateLights(p->map, p->tables, pattern, SamplerKind::Havran);
+                            generateLights(p->tables, pattern, SamplerKind::Havran, *cells);
                         const FilterResult filtered = filter.push(seq++, raw);
                         benchmark::DoNotOptimize(clusterLights(*filtered.lights, p->clustering));
                         if (withRegions)

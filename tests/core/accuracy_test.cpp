@@ -31,11 +31,11 @@ Errors errorsOf(const EnvMap& map) {
   for (int k = 0; k < 3; ++k) {
     const auto pattern = defaultSamplingPattern(map.layout).first(kCounts[k]);
     e.havran[k] = relativeRmsError(
-        irradianceFromLights(generateLights(map, tables, pattern, SamplerKind::Havran).lights,
+        irradianceFromLights(generateLights(tables, pattern, SamplerKind::Havran).lights,
                              normals),
         reference);
     e.standard[k] = relativeRmsError(
-        irradianceFromLights(generateLights(map, tables, pattern, SamplerKind::Standard).lights,
+        irradianceFromLights(generateLights(tables, pattern, SamplerKind::Standard).lights,
                              normals),
         reference);
   }

@@ -97,7 +97,7 @@ EnvMap smoothSky(int width, int height) {
 }
 
 LightSet lightsFrom(const EnvMap& map, std::size_t n) {
-  return generateLights(map, buildSamplingTables(map), defaultSamplingPattern(map.layout).first(n),
+  return generateLights(buildSamplingTables(map), defaultSamplingPattern(map.layout).first(n),
                         SamplerKind::Havran);
 }
 

@@ -47,7 +47,7 @@ EnvMap calibratedMap(const calib::CameraCalibration& calibration, const vem::Raw
 
 LightSet hemisphereLights(const EnvMap& map, std::size_t count) {
   const SamplingTables tables = buildSamplingTables(map);
-  return generateLights(map, tables, defaultSamplingPattern(map.layout).first(count),
+  return generateLights(tables, defaultSamplingPattern(map.layout).first(count),
                         SamplerKind::Havran);
 }
 

@@ -35,7 +35,7 @@ RenderRig::RenderRig(const RigOptions& options)
   }
   map_ = std::move(*map);
   const SamplingTables tables = buildSamplingTables(map_);
-  allLights_ = generateLights(map_, tables, defaultSamplingPattern(map_.layout).first(options.maxLights),
+  allLights_ = generateLights(tables, defaultSamplingPattern(map_.layout).first(options.maxLights),
                               SamplerKind::Havran);
   cube_ = cubeMapFromEnvMap(map_, 128, 8);
   embree_ = std::make_unique<embree::EmbreeScene>(

@@ -42,7 +42,7 @@ int runLights(const LightsOptions& o) {
   }
   if (tables.black) spdlog::warn("{}: the map is black; every light has rgb 0", o.input);
   const LightSet lights =
-      generateLights(*map, tables, defaultSamplingPattern(map->layout).first(o.count), o.sampler);
+      generateLights(tables, defaultSamplingPattern(map->layout).first(o.count), o.sampler);
   const nlohmann::ordered_json frame =
       o.clusterQ ? vemd::clusteredFrameJson(lights, *o.clusterQ, map->layout, 0)
                  : vemd::frameJson(lights, 0);

@@ -129,7 +129,7 @@ std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& p
   const SamplingTables tables = buildSamplingTables(*map);
   out.character = describeDynamicRange(tables);
   out.lights =
-      generateLights(*map, tables, defaultSamplingPattern(map->layout).first(kStudyMaxLights),
+      generateLights(tables, defaultSamplingPattern(map->layout).first(kStudyMaxLights),
                      SamplerKind::Havran);
   out.cube = cubeMapFromEnvMap(*map, kCubeFacePx, kCubeLevels);
   out.map = std::move(*map);
