@@ -31,7 +31,52 @@ void smoothImportance(const EnvMap& newest, double weight, double gate, EnvMap& 
   }
 }
 
+// A box sum of radius r along one line of n values (wrapping when `wrap`, else clamping), into out.
+void boxSumLine(const double* in, std::size_t stride, int n, int r, bool wrap, double* out,
+                std::size_t outStride) {
+  auto at = [&](int i) {
+    i = wrap ? ((i % n) + n) % n : std::clamp(i, 0, n - 1);
+    return in[std::size_t(i) * stride];
+  };
+  double sum = 0;
+  for (int i = -r; i <= r; ++i) sum += at(i);
+  for (int i = 0; i < n; ++i) {
+    out[std::size_t(i) * outStride] = sum;
+    sum += at(i + r + 1) - at(i - r);
+  }
+}
+
 }  // namespace
+
+EnvMap liftImportance(const EnvMap& map, double fraction, int radiusPx) {
+  VEM_EXPECTS(fraction >= 0.0 && radiusPx >= 0);
+  const int w = map.width, h = map.height;
+  std::vector<double> y(std::size_t(w) * std::size_t(h)), rows(y.size()), box(y.size());
+  for (int j = 0; j < h; ++j) {
+    for (int i = 0; i < w; ++i) y[std::size_t(j) * std::size_t(w) + std::size_t(i)] =
+        luminance(sanitizedRgb(map, i, j));
+  }
+  for (int j = 0; j < h; ++j) {
+    const std::size_t row = std::size_t(j) * std::size_t(w);
+    boxSumLine(&y[row], 1, w, radiusPx, true, &rows[row], 1);
+  }
+  for (int i = 0; i < w; ++i) {
+    boxSumLine(&rows[std::size_t(i)], std::size_t(w), h, radiusPx, false, &box[std::size_t(i)],
+               std::size_t(w));
+  }
+  const double area = double(2 * radiusPx + 1) * double(2 * radiusPx + 1);
+  EnvMap lifted = map;
+  for (std::size_t p = 0; p < y.size(); ++p) {
+    const double add = fraction * box[p] / area - y[p];
+    if (add > 0.0) {
+      for (int c = 0; c < 3; ++c) {
+        float& v = lifted.rgb[3 * p + std::size_t(c)];
+        v = float((std::isfinite(v) && v >= 0.0F ? double(v) : 0.0) + add);
+      }
+    }
+  }
+  return lifted;
+}
 
 std::vector<std::vector<glm::dvec3>> exactIrradiance(std::span<const SequenceFrame> frames,
                                                      std::span<const glm::dvec3> normals) {
@@ -43,8 +88,10 @@ std::vector<std::vector<glm::dvec3>> exactIrradiance(std::span<const SequenceFra
 
 std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames, SamplerKind sampler,
                                      std::size_t lightCount, double importanceWeight,
-                                     double importanceGate) {
-  VEM_EXPECTS(importanceWeight > 0.0 && importanceWeight <= 1.0 && importanceGate >= 0.0);
+                                     double importanceGate, double liftFraction,
+                                     int liftRadiusPx) {
+  VEM_EXPECTS(importanceWeight > 0.0 && importanceWeight <= 1.0 && importanceGate >= 0.0 &&
+              liftFraction >= 0.0);
   std::vector<LightSet> out;
   out.reserve(frames.size());
   SamplingTables tables;
@@ -53,18 +100,20 @@ std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames, Samp
   for (const SequenceFrame& frame : frames) {
     const auto pattern = defaultSamplingPattern(frame.map.layout).first(lightCount);
     if (cells.count != pattern.size()) cells = lightCellsFor(frame.map.layout, pattern, sampler);
-    if (importanceWeight == 1.0) {
+    if (importanceWeight == 1.0 && liftFraction == 0.0) {
       tables = buildSamplingTables(frame.map, std::move(tables));
       out.push_back(generateLights(tables, pattern, sampler, cells));
       continue;
     }
-    if (smoothed.rgb.size() != frame.map.rgb.size()) {
+    if (importanceWeight == 1.0 || smoothed.rgb.size() != frame.map.rgb.size()) {
       smoothed = frame.map;
     } else {
       smoothImportance(frame.map, importanceWeight, importanceGate, smoothed);
     }
-    tables = buildSamplingTables(smoothed, std::move(tables));
-    // The lights' colours come from their cells in the smoothed map, their power from the newest.
+    tables = buildSamplingTables(
+        liftFraction > 0.0 ? liftImportance(smoothed, liftFraction, liftRadiusPx) : smoothed,
+        std::move(tables));
+    // The lights' colours come from their cells in the importance map, their power from the newest.
     LightSet set = generateLights(tables, pattern, sampler, cells);
     const double newest = luminance(radianceIntegralSr(frame.map));
     const double scale = set.luminanceSr > 0.0 ? newest / set.luminanceSr : 0.0;

@@ -43,10 +43,22 @@ namespace vem::synth {
 // luminance differs from its average by more than importanceGate (relative to the larger of the
 // two) takes the newest value at once, so that what moves or switches on is not dragged behind
 // while the sensor noise of what stands still is averaged away.
+// liftFraction > 0 is issue 19's "density floor" idea with a floor relative to the local
+// brightness, also an experiment: before its tables are built, every pixel's importance is raised
+// to at least liftFraction times the mean luminance of the (2 liftRadiusPx + 1)^2 pixels around it
+// (liftImportance), so the dark gaps between bright regions are no longer nearly empty; the lights
+// are scaled to the newest map's luminance integral as above.
 [[nodiscard]] std::vector<LightSet> sampleSequence(std::span<const SequenceFrame> frames,
                                                    SamplerKind sampler, std::size_t lightCount,
                                                    double importanceWeight = 1.0,
-                                                   double importanceGate = 0.0);
+                                                   double importanceGate = 0.0,
+                                                   double liftFraction = 0.0,
+                                                   int liftRadiusPx = 8);
+
+// The map with grey added where a pixel's luminance is below `fraction` times the box mean of the
+// luminance around it (radius `radiusPx`, wrapping across the columns, clamped at the first and
+// last rows), up to that level. Bad pixels count as black.
+[[nodiscard]] EnvMap liftImportance(const EnvMap& map, double fraction, int radiusPx);
 
 // The sets through a fresh temporal filter with the preset's taps, frame k as sequence number k.
 [[nodiscard]] std::vector<LightSet> filterSequence(std::span<const LightSet> sets,

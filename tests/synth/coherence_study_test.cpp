@@ -127,6 +127,23 @@ TEST(CoherenceStudy, GatedSmoothingFollowsALightSwitchingOnAndStillHoldsAResting
   EXPECT_LT(restingGated.steps.medianDeg, 0.6 * restingRaw.steps.medianDeg);
 }
 
+// The local lift (an experiment, docs/temporal-filter.md): a dark pixel beside a bright one rises
+// to the fraction of the mean around it, wrapping across the seam; where the map is even, nothing
+// changes; a bright pixel is never lowered.
+TEST(CoherenceStudy, LiftRaisesADarkPixelToTheFractionOfItsNeighbourhoodAndLeavesAnEvenMap) {
+  const int width = 16, height = 8;
+  EnvMap map = EnvMap::filled(MapLayout::Hemisphere, width, height, glm::vec3(0.0F));
+  map.set(0, 4, glm::vec3(90.0F));  // luminance 90 at the seam
+  const EnvMap lifted = liftImportance(map, 0.5, 1);
+  // Radius 1: a 3 x 3 box holding the bright pixel has mean 10; half of that is 5.
+  EXPECT_NEAR(luminance(glm::dvec3(lifted.at(width - 1, 4))), 5.0, 1e-4);  // across the seam
+  EXPECT_NEAR(luminance(glm::dvec3(lifted.at(1, 3))), 5.0, 1e-4);
+  EXPECT_EQ(lifted.at(3, 4), glm::vec3(0.0F));  // outside the box
+  EXPECT_EQ(lifted.at(0, 4), glm::vec3(90.0F));  // the bright pixel itself
+  const EnvMap even = EnvMap::filled(MapLayout::Hemisphere, width, height, glm::vec3(2.0F));
+  EXPECT_EQ(liftImportance(even, 0.5, 2).rgb, even.rgb);
+}
+
 TEST(CoherenceStudy, TurningMapStepsAreMeasuredBeyondTheTurn) {
   // A hot pixel holding most of the power: most lights stand on it and turn with it. One column
   // per frame is an exact turn of 2.8125 degrees.

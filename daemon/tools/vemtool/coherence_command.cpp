@@ -42,6 +42,8 @@ struct CoherenceOptions {
   std::size_t lightCount = 256;
   double importanceWeight = 1.0;  // --importance-ema (an experiment of issue 19)
   double importanceGate = 0.0;    // --importance-gate (with it)
+  double liftFraction = 0.0;      // --importance-lift (another)
+  int liftRadiusPx = 8;           // --importance-lift-radius
   int frames = 30;
   bool noScenes = false;
   std::vector<SamplerKind> samplers{SamplerKind::Havran, SamplerKind::Standard};
@@ -129,7 +131,7 @@ void measureInto(const std::vector<synth::SequenceFrame>& frames, const std::str
   std::map<SamplerKind, synth::CoherenceTally> unfiltered;
   for (SamplerKind sampler : o.samplers) {
     const auto sets = synth::sampleSequence(frames, sampler, o.lightCount, o.importanceWeight,
-                                                 o.importanceGate);
+                                            o.importanceGate, o.liftFraction, o.liftRadiusPx);
     for (FilterPreset preset : o.filters) {
       const auto filtered = synth::filterSequence(sets, preset);
       synth::CoherenceTally t = synth::tallySequence(frames, filtered, exact, normals);
@@ -244,7 +246,10 @@ int runCoherence(const CoherenceOptions& o) {
       "`vemtool coherence --maps {} --layout {} --lights {} --frames {}{}`\n\n",
       o.mapsDir, layoutName(o.layout), o.lightCount, o.frames,
       (o.importanceWeight < 1.0 ? fmt::format(" --importance-ema {:g}", o.importanceWeight) : "") +
-          (o.importanceGate > 0.0 ? fmt::format(" --importance-gate {:g}", o.importanceGate) : ""));
+          (o.importanceGate > 0.0 ? fmt::format(" --importance-gate {:g}", o.importanceGate) : "") +
+          (o.liftFraction > 0.0 ? fmt::format(" --importance-lift {:g} --importance-lift-radius {}",
+                                              o.liftFraction, o.liftRadiusPx)
+                                : ""));
   std::cout << fmt::format(
       "Coherence: {} lights, {} layout, {} frames per sequence, {} maps from {}; steps in degrees "
       "between consecutive frames (beyond the true motion), flicker and error on irradiance at {} "
@@ -313,6 +318,15 @@ void addCoherenceCommand(CLI::App& app, int& exitCode) {
                   "this fraction takes the newest value (0: no gate)")
       ->type_name("FRACTION")
       ->check(help::quiet(CLI::Range(0.0, 1.0)));
+  cmd->add_option("--importance-lift", options->liftFraction,
+                  "Experiment: each pixel's importance raised to this fraction of the mean luminance "
+                  "around it (0: none)")
+      ->type_name("FRACTION")
+      ->check(help::quiet(CLI::Range(0.0, 1.0)));
+  cmd->add_option("--importance-lift-radius", options->liftRadiusPx,
+                  "With --importance-lift: the radius of the neighbourhood in pixels (8)")
+      ->type_name("PX")
+      ->check(help::quiet(CLI::Range(1, 256)));
   cmd->add_option("--plot", options->plotPath,
                   "Also write error against flicker per filter preset as an SVG plot")
       ->type_name("FILE.svg");
