@@ -30,7 +30,6 @@ LightSet generateLights(const SamplingTables& t, std::span<const glm::dvec2> pat
   LightSet set;
   set.luminanceSr = t.luminanceSr;
   set.black = t.black;
-  set.lights.reserve(pattern.size());
   // Each light: its share of the luminance, luminanceSr / N, in its cell's colour (light_cells.h).
   std::vector<glm::dvec3> radiance;
   if (!t.black) {
@@ -49,11 +48,15 @@ LightSet generateLights(const SamplingTables& t, std::span<const glm::dvec2> pat
   }
   // Scaled from the floor-included importance to the map's luminance: sum of luminances = luminanceSr.
   const double scale = t.black ? 0.0 : t.luminanceSr / t.totalMass;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
+  // In the cells' k-d order, not the pattern's: consecutive points then lie side by side in the
+  // warp domain and invert the same rows of the tables while they are in the cache.
+  set.lights.resize(pattern.size());
+  for (const LightCell& cell : cells.cells) {
+    const std::size_t i = cell.light;
     const MapSample s =
         kind == SamplerKind::Havran ? havranSample(t, pattern[i]) : standardSample(t, pattern[i]);
     const glm::dvec3 rgb = t.black ? glm::dvec3(0.0) : scale * radiance[i];
-    set.lights.push_back({std::uint32_t(i), glm::vec3(s.dir), glm::vec3(rgb)});
+    set.lights[i] = {std::uint32_t(i), glm::vec3(s.dir), glm::vec3(rgb)};
   }
   return set;
 }
