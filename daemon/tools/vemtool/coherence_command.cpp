@@ -20,11 +20,13 @@
 
 #include "commands.h"
 #include "core/default_pattern.h"
+#include "core/sampling_tables.h"
 #include "core/sphere_points.h"
 #include "core/temporal_filter.h"
 #include "core/upper_hemisphere.h"
 #include "mapio/map_file.h"
 #include "synth/coherence_study.h"
+#include "synth/jump_causes.h"
 #include "synth/scene_factory.h"
 #include "util/cli_value_names.h"
 #include "util/svg_plot.h"
@@ -46,6 +48,7 @@ struct CoherenceOptions {
   int liftRadiusPx = 8;           // --importance-lift-radius
   int frames = 30;
   bool noScenes = false;
+  bool explainJumps = false;  // --explain-jumps: where the steps above 5 degrees went, and over what
   std::vector<SamplerKind> samplers{SamplerKind::Havran, SamplerKind::Standard};
   std::vector<FilterPreset> filters{kAllPresets.begin(), kAllPresets.end()};
 };
@@ -122,6 +125,10 @@ struct ScenarioTallies {
   std::map<TallyKey, synth::CoherenceTally> total;
   // Per map, for the per-map table: the unfiltered tally per sampler.
   std::vector<std::pair<std::string, std::map<SamplerKind, synth::CoherenceTally>>> perMap;
+  // With --explain-jumps: the unfiltered steps above kLargeStepDeg, per sampler.
+  std::map<SamplerKind, std::vector<synth::LargeJump>> jumps;
+  std::map<SamplerKind, std::vector<double>> rowPeakShares;  // of every light, for the base rate
+  std::map<SamplerKind, std::vector<double>> rowsDisagreement;  // of every light, likewise
 };
 
 void measureInto(const std::vector<synth::SequenceFrame>& frames, const std::string& mapName,
@@ -132,6 +139,15 @@ void measureInto(const std::vector<synth::SequenceFrame>& frames, const std::str
   for (SamplerKind sampler : o.samplers) {
     const auto sets = synth::sampleSequence(frames, sampler, o.lightCount, o.importanceWeight,
                                             o.importanceGate, o.liftFraction, o.liftRadiusPx);
+    if (o.explainJumps) {
+      for (std::size_t k = 1; k < frames.size(); ++k) {
+        const SamplingTables tables = buildSamplingTables(frames[k].map);
+        synth::appendLargeJumps(tables, sets[k - 1], sets[k], frames[k].motionFromPrevious,
+                                into.jumps[sampler]);
+        synth::appendRowPeakShares(tables, sets[k], into.rowPeakShares[sampler]);
+        synth::appendNeighbourRowsDisagreement(tables, sets[k], into.rowsDisagreement[sampler]);
+      }
+    }
     for (FilterPreset preset : o.filters) {
       const auto filtered = synth::filterSequence(sets, preset);
       synth::CoherenceTally t = synth::tallySequence(frames, filtered, exact, normals);
@@ -181,6 +197,47 @@ void printPerMap(const ScenarioTallies& s, const CoherenceOptions& o) {
   }
 }
 
+void printJumpCauses(const std::vector<ScenarioTallies>& results, const CoherenceOptions& o) {
+  std::cout << "\n### Why the largest steps happen (--explain-jumps), no filter\n\n"
+               "Every step above 5 degrees, placed in the newer frame's tables (synth/jump_causes.h): "
+               "across rows when its row coordinate moved by a row or more, else along its row; and "
+               "the mean importance of what it passed over (the pixels of the row between its two "
+               "columns, or the rows between its two rows) over the mean; and how many land in a "
+               "row whose brightest 16-pixel block holds more than half of the row's importance (a "
+               "sun's row), against the share of all lights in such rows; how many sit where the "
+               "conditional CDFs of the two rows around them differ by more than 0.1 (a fraction of "
+               "the row), against all lights; and how many changed row.\n\n"
+               "| sequence | sampler | steps > 5 deg | across rows | along a row | over a gap below 1 % "
+               "of the mean | below 10 % | median gap / mean | in a sun's row | all lights in a "
+               "sun's row | rows differ | all lights where rows differ | row changed |\n"
+               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const ScenarioTallies& s : results) {
+    for (SamplerKind sampler : o.samplers) {
+      const auto it = s.jumps.find(sampler);
+      if (it == s.jumps.end()) continue;
+      const synth::JumpCauses c = synth::summariseJumps(it->second);
+      const auto& shares = s.rowPeakShares.at(sampler);
+      auto fractionAbove = [](const std::vector<double>& v, double limit) {
+        return v.empty() ? 0.0
+                         : double(std::count_if(v.begin(), v.end(),
+                                                [&](double x) { return x > limit; })) /
+                               double(v.size());
+      };
+      const double base = fractionAbove(shares, synth::kPeakyRowShare);
+      const double baseDisagree =
+          fractionAbove(s.rowsDisagreement.at(sampler), synth::kRowsDisagree);
+      std::cout << fmt::format(
+          "| {} | {} | {} | {:.0f} % | {:.0f} % | {:.0f} % | {:.0f} % | {:.3g} | {:.0f} % | {:.1f} % "
+          "| {:.0f} % | {:.1f} % | {:.0f} % |\n",
+          s.name, samplerName(sampler), c.count, 100.0 * c.fractionAcrossRows,
+          100.0 * (c.count > 0 ? 1.0 - c.fractionAcrossRows : 0.0), 100.0 * c.fractionGapBelowPercent,
+          100.0 * c.fractionGapBelowTenPercent, c.medianGapRatio, 100.0 * c.fractionPeakyRow,
+          100.0 * base, 100.0 * c.fractionRowsDisagree, 100.0 * baseDisagree,
+          100.0 * c.fractionRowIndexChanged);
+    }
+  }
+}
+
 // Error against the lights' flicker per sampler and scenario (those with a per-map table), one
 // point per filter preset: what smoothing in time costs in accuracy.
 bool writePlot(const std::vector<ScenarioTallies>& results, const CoherenceOptions& o) {
@@ -220,7 +277,7 @@ int runCoherence(const CoherenceOptions& o) {
   std::vector<ScenarioTallies> results;
   std::uint64_t seed = 1;
   for (const Scenario& scenario : mapScenarios(o.frames)) {
-    ScenarioTallies s{scenario.name, scenario.perMapTable, {}, {}};
+    ScenarioTallies s{scenario.name, scenario.perMapTable, {}, {}, {}, {}, {}};
     for (const NamedMap& m : *maps) {
       spdlog::info("coherence: {}, {}", scenario.name, m.name);
       measureInto(scenario.make(m.map, seed++), m.name, o, normals, s);
@@ -233,7 +290,7 @@ int runCoherence(const CoherenceOptions& o) {
       auto scene = synth::makeScene(spec, {});
       if (!scene) return fail(scene.error());
       spdlog::info("coherence: synthetic:{}", spec);
-      ScenarioTallies s{fmt::format("synthetic:{}", spec), false, {}, {}};
+      ScenarioTallies s{fmt::format("synthetic:{}", spec), false, {}, {}, {}, {}, {}};
       const auto frames = synth::sceneSequence(**scene, o.layout, kSceneWidth, height,
                                                *synth::naturalRateHz(spec), o.frames);
       measureInto(frames, spec, o, normals, s);
@@ -249,7 +306,8 @@ int runCoherence(const CoherenceOptions& o) {
           (o.importanceGate > 0.0 ? fmt::format(" --importance-gate {:g}", o.importanceGate) : "") +
           (o.liftFraction > 0.0 ? fmt::format(" --importance-lift {:g} --importance-lift-radius {}",
                                               o.liftFraction, o.liftRadiusPx)
-                                : ""));
+                                : "") +
+          (o.explainJumps ? " --explain-jumps" : ""));
   std::cout << fmt::format(
       "Coherence: {} lights, {} layout, {} frames per sequence, {} maps from {}; steps in degrees "
       "between consecutive frames (beyond the true motion), flicker and error on irradiance at {} "
@@ -263,6 +321,7 @@ int runCoherence(const CoherenceOptions& o) {
   for (const ScenarioTallies& s : results) {
     if (s.perMapTable) printPerMap(s, o);
   }
+  if (o.explainJumps) printJumpCauses(results, o);
   if (!o.plotPath.empty() && !writePlot(results, o))
     return fail(fmt::format("--plot {}: could not write the file.", o.plotPath));
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
@@ -323,6 +382,9 @@ void addCoherenceCommand(CLI::App& app, int& exitCode) {
                   "around it (0: none)")
       ->type_name("FRACTION")
       ->check(help::quiet(CLI::Range(0.0, 1.0)));
+  cmd->add_flag("--explain-jumps", options->explainJumps,
+                "Also tabulate the steps above 5 degrees: across rows or along a row, and how dark "
+                "what they passed over is");
   cmd->add_option("--importance-lift-radius", options->liftRadiusPx,
                   "With --importance-lift: the radius of the neighbourhood in pixels (8)")
       ->type_name("PX")
