@@ -1,5 +1,6 @@
 #include "client/embree/light_renderer.h"
 
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "client/embree/shading_point.h"
 #include "client/render/cube_map_sampling.h"
 #include "client/render/shading_model.h"
+#include "core/color.h"
 #include "core/glossy_light_sets.h"
 
 namespace vem::embree {
@@ -20,6 +22,7 @@ struct Frame {
   const render::LightingGeometry& geometry;
   const CubeMap* cube;
   LightRenderOptions options;
+  std::vector<float> peakFractions;  // per diffuse light, with an environment (ratio shading)
 };
 
 bool visible(const Frame& frame, const ShadingPoint& p, glm::vec3 dir) {
@@ -76,7 +79,69 @@ glm::vec3 glossyLightsTerm(const Frame& frame, const ShadingPoint& p) {
   return sum;
 }
 
+// Per channel S / U; 1 where U is 0 (nothing known to block), the luminance ratio for a channel
+// that carries under 1e-6 of the largest.
+glm::vec3 ratioOf(glm::vec3 shadowed, glm::vec3 unshadowed) {
+  const float largest = std::max({unshadowed.x, unshadowed.y, unshadowed.z});
+  if (!(largest > 0.0F)) return glm::vec3(1.0F);
+  const auto overall = float(luminance(shadowed) / std::max(luminance(unshadowed), 1e-30));
+  glm::vec3 out;
+  for (int c = 0; c < 3; ++c) {
+    out[c] = unshadowed[c] > 1e-6F * largest ? shadowed[c] / unshadowed[c] : overall;
+  }
+  return out;
+}
+
+glm::vec3 shadeByRatio(const Frame& frame, const ShadingPoint& p) {
+  const render::EnvironmentLighting& env = *frame.options.environment;
+  const scene::Material& m = *p.material;
+  const std::size_t materialIndex = p.hit.materialIndex;
+  const bool specularByRatio = m.glossy() && !m.mirrorLike() &&
+                               materialIndex < env.specular.size() &&
+                               env.specular[materialIndex].has_value();
+  glm::vec3 unshadowedD(0.0F);
+  glm::vec3 shadowedD(0.0F);
+  glm::vec3 unshadowedS(0.0F);
+  glm::vec3 shadowedS(0.0F);
+  glm::vec3 peakS(0.0F);  // the clipped peaks' specular light, exact per light
+  double sumY = 0.0;
+  double sumY2 = 0.0;
+  for (const std::uint32_t i : diffuseCandidates(frame, p.normal)) {
+    const Light& light = frame.lights.diffuse.lights[i];
+    const float cosine = glm::dot(p.normal, light.dir);
+    if (cosine <= 0.0F) continue;
+    const float v = visible(frame, p, light.dir) ? 1.0F : 0.0F;
+    const glm::vec3 wd = light.rgb * cosine;
+    unshadowedD += wd;
+    shadowedD += v * wd;
+    if (specularByRatio) {
+      const glm::vec3 full = render::specularBrdf(m, p.normal, p.wo, light.dir) * wd;
+      const float peak = frame.peakFractions.empty() ? 0.0F : frame.peakFractions[i];
+      peakS += (v * peak) * full;
+      const glm::vec3 ws = (1.0F - peak) * full;
+      unshadowedS += ws;
+      shadowedS += v * ws;
+      const double y = luminance(ws);
+      sumY += y;
+      sumY2 += y * y;
+    }
+  }
+  const glm::vec3 ratioD = ratioOf(shadowedD, unshadowedD);
+  glm::vec3 radiance = render::unshadowedDiffuse(env, m, p.normal) * ratioD;
+  if (specularByRatio) {
+    const double effective = sumY2 > 0.0 ? sumY * sumY / sumY2 : 0.0;
+    const auto t = float(std::clamp(effective / frame.options.minEffectiveLights, 0.0, 1.0));
+    const glm::vec3 ratioS = glm::mix(ratioD, ratioOf(shadowedS, unshadowedS), t);
+    radiance += render::unshadowedSpecular(env, materialIndex, m, p.normal, p.wo) * ratioS + peakS;
+  } else if (m.mirrorLike() && frame.cube != nullptr) {
+    const glm::vec3 r = render::reflectedDirection(p.normal, p.wo);
+    radiance += render::mirrorReflectance(m, p.normal, p.wo) * render::sampleCubeMap(*frame.cube, r);
+  }
+  return radiance;
+}
+
 glm::vec3 shade(const Frame& frame, const ShadingPoint& p) {
+  if (frame.options.environment != nullptr) return shadeByRatio(frame, p);
   const scene::Material& m = *p.material;
   if (m.mirrorLike() && frame.cube != nullptr) {
     const glm::vec3 r = render::reflectedDirection(p.normal, p.wo);
@@ -113,7 +178,11 @@ render::LinearImage renderWithLights(const EmbreeScene& scene, const scene::Orbi
                                      const render::LightingGeometry& geometry, const CubeMap* cube,
                                      const LightRenderOptions& options) {
   render::LinearImage image = render::LinearImage::black(widthPx, heightPx);
-  const Frame frame{scene, lights, geometry, cube, options};
+  Frame frame{scene, lights, geometry, cube, options, {}};
+  if (options.environment != nullptr && cube != nullptr) {
+    frame.peakFractions =
+        render::peakFractionsOf(*options.environment, *cube, lights.diffuse.lights);
+  }
   forEachRow(heightPx, options.threadCount, [&](int row) { renderRow(frame, camera, row, image); });
   return image;
 }

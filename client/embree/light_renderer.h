@@ -14,6 +14,19 @@
 //           specularBrdf(dir_k) low.rgb_k weight_k max(0, n . dir_k) V_k;
 //       + for mirror-like materials when a cube map is given, instead of the specular lights:
 //           mirrorReflectance(n, wo) sampleCubeMap(cube, R)   (unoccluded, as the GL renderer).
+// With LightRenderOptions::environment set, shading by ratio instead (issue 20; Heitz et al. 2018,
+// "Combining analytic direct illumination and stochastic shadows"): the unshadowed light comes
+// from the prefiltered environment (render/environment_lighting.h), the lights give only the
+// shadowing, per channel:
+//   L_o = unshadowedDiffuse(n) ratio_d + unshadowedSpecular(n, wo) ratio_s
+//   ratio_d = sum_i rgb_i max(0, n . dir_i) V_i / sum_i rgb_i max(0, n . dir_i)
+//   ratio_s = the same sums weighted by specularBrdf(dir_i)
+// over the same diffuse lights (no L/H sets). A ratio whose denominator is 0 (no light faces the
+// surface) is 1: nothing is known to block the environment. Where few lights carry the specular
+// sums (their effective count, (sum y)^2 / sum y^2 of the terms' luminances y, under
+// minEffectiveLights: sharp lobes, few lights) ratio_s blends linearly into ratio_d, the wider
+// lobe's estimate of the same visibility. Mirror-like materials keep the cube map's reflection
+// above, with the diffuse part by ratio.
 // V is an occlusion ray toward the light (1 with shadows off). Pixels whose ray leaves the scene
 // show the cube map in the ray's direction (black without one) and are not covered.
 // Rows are shared by up to options.threadCount of TBB's threads (parallel_rows.h); the image does
@@ -21,6 +34,7 @@
 #pragma once
 
 #include "client/embree/embree_scene.h"
+#include "client/render/environment_lighting.h"
 #include "client/render/linear_image.h"
 #include "client/render/shading_lights.h"
 #include "client/scene/orbit_camera.h"
@@ -34,6 +48,9 @@ struct LightRenderOptions {
   // What the cube map covers: nothing below the horizon of a Hemisphere one (vemd's stream), so
   // the background is black there (render::sampleBackground).
   MapLayout cubeCoverage = MapLayout::Sphere;
+  // Shading by ratio (above) when set; borrowed, built for this scene's materials.
+  const render::EnvironmentLighting* environment = nullptr;
+  double minEffectiveLights = 4.0;
 };
 
 // widthPx, heightPx >= 1. `cube` may be null (black background, mirrors lit by the lights).

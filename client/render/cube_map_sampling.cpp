@@ -32,6 +32,33 @@ glm::vec3 sampleCubeMap(const CubeMap& cube, glm::vec3 dir, int level) {
   return glm::mix(top, bottom, fv);
 }
 
+glm::vec3 sampleCubeMapSeamless(const CubeMap& cube, glm::vec3 dir, int level) {
+  const int l = std::clamp(level, 0, int(cube.levels.size()) - 1);
+  const CubeMapLevel& lv = cube.levels[std::size_t(l)];
+  const CubeFaceCoord coord = cubeFaceCoordOf(glm::dvec3(dir));
+  const int f = lv.facePx;
+  const double u = coord.s * f - 0.5;
+  const double v = coord.t * f - 0.5;
+  const int u0 = int(std::floor(u));
+  const int v0 = int(std::floor(v));
+  const auto fu = float(u - u0);
+  const auto fv = float(v - v0);
+  const auto texel = [&](int column, int row) {
+    CubeTexel at{coord.face, column, row};
+    if (column < 0 || column >= f || row < 0 || row >= f) {
+      at = cubeTexelOf(directionFromCubeFaceCoord(
+                           {coord.face, (column + 0.5) / double(f), (row + 0.5) / double(f)}),
+                       f);
+    }
+    const std::vector<float>& face = lv.faces[std::size_t(at.face)];
+    const std::size_t i = 3 * (std::size_t(at.row) * std::size_t(f) + std::size_t(at.column));
+    return glm::vec3(face[i], face[i + 1], face[i + 2]);
+  };
+  const glm::vec3 top = glm::mix(texel(u0, v0), texel(u0 + 1, v0), fu);
+  const glm::vec3 bottom = glm::mix(texel(u0, v0 + 1), texel(u0 + 1, v0 + 1), fu);
+  return glm::mix(top, bottom, fv);
+}
+
 glm::vec3 sampleBackground(const CubeMap& cube, MapLayout coverage, glm::vec3 dir) {
   if (coverage == MapLayout::Hemisphere && dir.y < 0.0F) return glm::vec3(0.0F);
   return sampleCubeMap(cube, dir, 0);

@@ -15,6 +15,13 @@ namespace vem::render {
 // dir non-zero (need not be unit); level clamped to the chain.
 [[nodiscard]] glm::vec3 sampleCubeMap(const CubeMap& cube, glm::vec3 dir, int level = 0);
 
+// The same read without seams: a texel beyond the face's edge is read from the neighbouring face
+// (the texel under the direction through its centre), as GL samples with
+// GL_TEXTURE_CUBE_MAP_SEAMLESS. For the small derived cubes of environment_lighting.h, whose texels
+// span several degrees: clamping there would leave a step of half a texel's variation at every
+// edge.
+[[nodiscard]] glm::vec3 sampleCubeMapSeamless(const CubeMap& cube, glm::vec3 dir, int level = 0);
+
 // The background along a primary ray: level 0 along dir, except below the horizon (dir.y < 0) of a
 // cube made from a Hemisphere map (vemd's stream), which holds nothing there: black. Without that
 // cut, linear filtering blends the sky texels just above the horizon half a texel below it (0.45

@@ -37,11 +37,6 @@ glm::vec3 blinnLobe(const scene::Material& m, glm::vec3 n, glm::vec3 wo, glm::ve
   return m.specularAlbedo * ((m.exponent + 8.0F) / (8.0F * kPi) * std::pow(cosH, m.exponent));
 }
 
-float ggxD(float cosH, float a2) {
-  const float d = cosH * cosH * (a2 - 1.0F) + 1.0F;
-  return a2 / (kPi * d * d);
-}
-
 float smithG1(float cosV, float a2) {
   return 2.0F * cosV / (cosV + std::sqrt(a2 + (1.0F - a2) * cosV * cosV));
 }
@@ -58,7 +53,7 @@ glm::vec3 ggxLobe(const scene::Material& m, glm::vec3 n, glm::vec3 wo, glm::vec3
   const glm::vec3 h = glm::normalize(wi + wo);
   const float a = m.roughness * m.roughness;
   const float a2 = a * a;
-  const float d = ggxD(std::max(0.0F, glm::dot(n, h)), a2);
+  const float d = ggxDistribution(std::max(0.0F, glm::dot(n, h)), a2);
   const float g = smithG1(cosI, a2) * smithG1(cosO, a2);
   return schlick(m.specularAlbedo, glm::dot(wo, h)) * (d * g / (4.0F * cosI * cosO));
 }
@@ -66,6 +61,11 @@ glm::vec3 ggxLobe(const scene::Material& m, glm::vec3 n, glm::vec3 wo, glm::vec3
 }  // namespace
 
 glm::vec3 diffuseBrdf(const scene::Material& material) { return material.diffuseAlbedo / kPi; }
+
+float ggxDistribution(float cosHalf, float alphaSquared) {
+  const float d = cosHalf * cosHalf * (alphaSquared - 1.0F) + 1.0F;
+  return alphaSquared / (kPi * d * d);
+}
 
 glm::vec3 specularBrdf(const scene::Material& material, glm::vec3 n, glm::vec3 wo, glm::vec3 wi) {
   if (glm::dot(n, wi) <= 0.0F || glm::dot(n, wo) <= 0.0F) {

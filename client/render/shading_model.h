@@ -19,6 +19,10 @@ namespace vem::render {
 // The specular lobe of f (0 for Lambertian), without the diffuse part.
 [[nodiscard]] glm::vec3 specularBrdf(const scene::Material& material, glm::vec3 n, glm::vec3 wo,
                                      glm::vec3 wi);
+// The GGX normal distribution D at cosHalf = n . h, for alpha^2 = alphaSquared (alpha =
+// roughness^2): alpha^2 / (pi ((n . h)^2 (alpha^2 - 1) + 1)^2); the integral of D (n . h) over
+// the hemisphere of h is 1.
+[[nodiscard]] float ggxDistribution(float cosHalf, float alphaSquared);
 // wo mirrored about n: 2 (n . wo) n - wo.
 [[nodiscard]] glm::vec3 reflectedDirection(glm::vec3 n, glm::vec3 wo);
 // The fraction of a uniform environment a mirror-like material reflects toward wo (its directional

@@ -1,12 +1,15 @@
 #include "client/vemview/embree_frame_renderer.h"
 
 #include <chrono>
+#include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "client/embree/embree_scene.h"
 #include "client/embree/light_renderer.h"
 #include "client/embree/reference_renderer.h"
+#include "client/render/environment_lighting.h"
 
 namespace vem::view {
 namespace {
@@ -18,10 +21,15 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 class EmbreeFrameRenderer final : public FrameRenderer {
  public:
-  EmbreeFrameRenderer(const ViewerOptions& options, embree::EmbreeScene scene,
-                      const render::LightingGeometry& geometry, MapLayout cubeCoverage)
+  EmbreeFrameRenderer(const ViewerOptions& options, const RenderPlan& plan,
+                      embree::EmbreeScene scene, const render::LightingGeometry& geometry)
       : options_(options), scene_(std::move(scene)), geometry_(geometry) {
-    lightOptions_.cubeCoverage = cubeCoverage;
+    lightOptions_.cubeCoverage = plan.cubeMapCoverage;
+    if (plan.shadingByRatio) {
+      environmentOptions_ = render::EnvironmentLightingOptions{};
+      environmentOptions_->diffuse = plan.irradianceCube;
+      environmentOptions_->specular = plan.prefilteredCubes;
+    }
   }
 
   std::string name() const override {
@@ -45,6 +53,7 @@ class EmbreeFrameRenderer final : public FrameRenderer {
       frame.timing["relative_error"] = result.relativeError;
       frame.timing["converged"] = result.converged;
     } else {
+      lightOptions_.environment = environmentFor(input.cube, frame);
       frame.image = embree::renderWithLights(scene_, camera, options_.widthPx, options_.heightPx,
                                              lights, geometry_, input.cube.get(), lightOptions_);
     }
@@ -53,7 +62,25 @@ class EmbreeFrameRenderer final : public FrameRenderer {
   }
 
  private:
+  // The prefiltered environment of the frame's cube map, rebuilt only when the cube map changes
+  // (the input hands out the same shared cube until a new one arrives); null without ratio
+  // shading or a cube map.
+  const render::EnvironmentLighting* environmentFor(const std::shared_ptr<const CubeMap>& cube,
+                                                    RenderedFrame& frame) {
+    if (!environmentOptions_ || cube == nullptr) return nullptr;
+    if (cube != environmentCube_) {
+      const auto start = std::chrono::steady_clock::now();
+      environment_ = render::makeEnvironmentLighting(*cube, scene_.materials(), *environmentOptions_);
+      environmentCube_ = cube;
+      frame.timing["prefilter_ms"] = msSince(start);
+    }
+    return &environment_;
+  }
+
   const ViewerOptions& options_;
+  std::optional<render::EnvironmentLightingOptions> environmentOptions_;
+  std::shared_ptr<const CubeMap> environmentCube_;
+  render::EnvironmentLighting environment_;
   embree::EmbreeScene scene_;
   const render::LightingGeometry& geometry_;
   embree::LightRenderOptions lightOptions_;
@@ -68,8 +95,7 @@ std::expected<std::unique_ptr<FrameRenderer>, std::string> makeEmbreeFrameRender
   if (!built) {
     return std::unexpected(built.error());
   }
-  return std::make_unique<EmbreeFrameRenderer>(options, std::move(*built), geometry,
-                                               plan.cubeMapCoverage);
+  return std::make_unique<EmbreeFrameRenderer>(options, plan, std::move(*built), geometry);
 }
 
 }  // namespace vem::view

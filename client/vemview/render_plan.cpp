@@ -11,9 +11,26 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
   plan.glossyPass = scene::anyGlossy(scene);
   plan.glossyReason = plan.glossyPass ? "a material is glossy" : "no glossy material";
   const bool mirror = scene::anyMirrorLike(scene);
-  const bool wanted = plan.glossyPass || request.backgroundWanted;
+  plan.shadingByRatio = request.shadingByRatio && request.inputHasCubeMaps;
+  if (plan.shadingByRatio) {
+    plan.irradianceCube = std::ranges::any_of(scene.meshes, [&](const scene::Mesh& mesh) {
+      const glm::vec3 kd = scene.materials.at(mesh.material).diffuseAlbedo;
+      return mesh.triangleCount() > 0 && std::max({kd.x, kd.y, kd.z}) > 0.0F;
+    });
+    plan.prefilteredCubes = std::ranges::any_of(scene.meshes, [&](const scene::Mesh& mesh) {
+      const scene::Material& m = scene.materials.at(mesh.material);
+      return mesh.triangleCount() > 0 && m.glossy() && !m.mirrorLike();
+    });
+    plan.glossyPass = false;
+    plan.glossyReason = "shading by ratio";
+  }
+  plan.ratioReason = !request.shadingByRatio ? "" : !request.inputHasCubeMaps
+                                                   ? "the input carries no cube map"
+                                                   : "";
+  const bool wanted = plan.glossyPass || request.backgroundWanted || plan.shadingByRatio;
   plan.cubeMap = wanted && request.inputHasCubeMaps;
   plan.cubeMapReason = !request.inputHasCubeMaps && wanted ? "the input carries none"
+                       : plan.shadingByRatio ? "shading by ratio"
                        : plan.glossyPass
                            ? (mirror ? "mirror-like reflections" : "glossy reflections")
                        : request.backgroundWanted ? "background asked for"
@@ -63,6 +80,15 @@ std::string RenderPlan::describe() const {
               : fmt::format(", no glossy pass ({})", glossyReason);
   text += cubeMap ? fmt::format(", cube map ({})", cubeMapReason)
                   : fmt::format(", no cube map ({})", cubeMapReason);
+  if (shadingByRatio) {
+    text += fmt::format(", shading by ratio ({}, {})",
+                        irradianceCube ? "irradiance cube: a diffuse material"
+                                       : "no irradiance cube: no diffuse material",
+                        prefilteredCubes ? "prefiltered cubes: a glossy material"
+                                         : "no prefiltered cube: no glossy material");
+  } else if (!ratioReason.empty()) {
+    text += fmt::format(", shading by the lights ({})", ratioReason);
+  }
   if (lighting.clusterBudget > 0) {
     text += fmt::format(", clustering Q {}", lighting.clusterBudget);
   }

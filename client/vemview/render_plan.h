@@ -10,6 +10,8 @@
 // - shadowMaps: shadowedCount > 0 only when some surface can hide a light from another
 //   (scene::canCastShadows); the atlas is not even allocated otherwise. Once the renderer exists,
 //   shadowedCount is cut to what its atlas holds (withShadowMapCapacity).
+// - shadingByRatio (--shading ratio, with a cube map in the input): the irradiance cube only with a
+//   diffuse material, prefiltered cubes only with a glossy one, and no L/H sets.
 // Per frame (decideFrame):
 // - lights unchanged since the last drawn frame (same input seq): shadow maps are reused;
 // - lights, camera and scene all unchanged: nothing is redrawn (the last image stands).
@@ -36,6 +38,7 @@ struct PlanRequest {
   bool inputClustered = false;          // the input's lights are clusters already
   bool inputHasCubeMaps = true;         // a light file has none
   MapLayout inputLayout = MapLayout::Hemisphere;
+  bool shadingByRatio = false;  // --shading ratio
 };
 
 struct RenderPlan {
@@ -52,6 +55,13 @@ struct RenderPlan {
   // What the input's cube maps cover (vemd's stream: the upper hemisphere); the renderers show no
   // background below a hemisphere's horizon.
   MapLayout cubeMapCoverage = MapLayout::Sphere;
+  // Shading by ratio: the prefiltered environment (render/environment_lighting.h), built when the
+  // cube map changes, only for what the materials use: the irradiance cube when a material has a
+  // diffuse albedo, a prefiltered cube per glossy material that is not mirror-like. No L/H pass.
+  bool shadingByRatio = false;
+  bool irradianceCube = false;
+  bool prefilteredCubes = false;
+  std::string ratioReason;
 
   [[nodiscard]] std::string describe() const;  // one line for the start and the status line
 };

@@ -49,6 +49,7 @@ PlanRequest requestFor(const ViewerOptions& o, const InputFacts& facts) {
   request.shadowedCount = o.shadowedCount;
   request.shadowMapPx = o.shadowMapPx;
   request.regions = o.regions;
+  request.shadingByRatio = o.shading == ShadingKind::Ratio;
   request.clusterBudget = o.clusterBudget;
   request.backgroundWanted = o.background;
   request.targetFrameMs = o.targetFrameMs;

@@ -100,6 +100,12 @@ void addLightingOptions(CLI::App& app, ViewerOptions& o) {
   choiceOf<bool>(app.add_option("--regions", o.regions, "Angular-region light culling"),
                  {{"on", true}, {"off", false}})
       ->default_str(o.regions ? "on" : "off");
+  choiceOf<ShadingKind>(
+      app.add_option("--shading", o.shading,
+                     "lights (the sums over the lights, glossy L/H: paper 004) or ratio (the "
+                     "prefiltered environment, shadowed by the lights' ratio; --renderer embree)"),
+      {{"lights", ShadingKind::Lights}, {"ratio", ShadingKind::Ratio}})
+      ->default_str("lights");
   app.add_option("--cluster", o.clusterBudget, "Cluster the lights toward about Q (0: off)")
       ->check(CLI::Range(0, 65536));
   app.add_option("--target-ms", o.targetFrameMs,
@@ -186,6 +192,11 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
   if (o.renderer == RendererKind::Reference && (!o.connectUrl.empty() || !o.lightFile.empty())) {
     std::cerr << "vemview: error: --renderer reference integrates an environment map: give it "
                  "--map FILE, not --connect or --lights (see 'vemview --help')\n";
+    return std::unexpected(cli::kExitUsage);
+  }
+  if (o.shading == ShadingKind::Ratio && o.renderer != RendererKind::Embree) {
+    std::cerr << "vemview: error: --shading ratio needs --renderer embree (the OpenGL renderer "
+                 "shades by the lights only, so far)\n";
     return std::unexpected(cli::kExitUsage);
   }
   if (o.headless && o.frames == 0) {

@@ -10,6 +10,9 @@
 namespace vem::view {
 
 enum class RendererKind { Gl, Embree, Reference };
+// How the lights shade (issue 20): the paper's sums over the lights (glossy L/H), or the
+// prefiltered environment with the lights' shadowing ratio (embree_frame_renderer.h).
+enum class ShadingKind { Lights, Ratio };
 
 struct ViewerOptions {
   // Input: exactly one of these (none: the map of kDefaultMap from the shared data).
@@ -33,6 +36,7 @@ struct ViewerOptions {
   std::size_t shadowedCount = 64;
   int shadowMapPx = 256;
   bool regions = true;
+  ShadingKind shading = ShadingKind::Lights;
   int clusterBudget = 128;
   std::optional<double> targetFrameMs;
   bool background = false;

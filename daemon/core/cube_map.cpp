@@ -3,8 +3,10 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <utility>
 
 #include "core/cube_map_lookup.h"
+#include "core/sampling_tables.h"
 #include "util/contract.h"
 
 namespace vem {
@@ -34,10 +36,10 @@ Taps clampedTaps(double coord, int size) {
   return {i, i + 1, float(f - lo)};
 }
 
-glm::vec3 pixel(const EnvMap& map, int x, int y) {
-  const std::size_t i = 3 * (std::size_t(y) * std::size_t(map.width) + std::size_t(x));
-  return {map.rgb[i], map.rgb[i + 1], map.rgb[i + 2]};
-}
+// Sanitised as the lights and the reference read the map (a channel that is NaN, infinite or
+// negative makes the pixel black): sky.exr's 11 negative pixels beside its sun (down to -3394)
+// took 12 % of the map's light out of its cube maps, so the cube and the lights disagreed.
+glm::vec3 pixel(const EnvMap& map, int x, int y) { return glm::vec3(sanitizedRgb(map, x, y)); }
 
 void fillLevel0(const EnvMap& map, CubeMapLevel& level) {
   const int size = level.facePx;
@@ -112,11 +114,17 @@ glm::vec3 sampleEnvMapBilinear(const EnvMap& map, glm::dvec3 dir) {
 
 CubeMap cubeMapFromEnvMap(const EnvMap& map, int facePx, int levels) {
   VEM_EXPECTS(facePx >= 1 && levels >= 1);
-  CubeMap cube;
-  cube.levels.reserve(std::size_t(levels));
-  CubeMapLevel& base = cube.levels.emplace_back();
+  CubeMapLevel base;
   base.facePx = facePx;
   fillLevel0(map, base);
+  return cubeMapFromLevel0(std::move(base), levels);
+}
+
+CubeMap cubeMapFromLevel0(CubeMapLevel base, int levels) {
+  VEM_EXPECTS(base.facePx >= 1 && levels >= 1);
+  CubeMap cube;
+  cube.levels.reserve(std::size_t(levels));
+  cube.levels.push_back(std::move(base));
   while (int(cube.levels.size()) < levels && cube.levels.back().facePx % 2 == 0) {
     cube.levels.push_back(boxHalved(cube.levels.back()));
   }

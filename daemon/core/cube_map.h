@@ -9,6 +9,8 @@
 //   s = (column + 0.5) / F, t = (row + 0.5) / F; row 0 is the first row GL uploads.
 // - Each face holds F x F texels, row-major, three floats (linear RGB in the map's units, cd/m^2
 //   once calibrated) per texel: faces[f][3 (row F + column) + channel].
+// - Pixels are read sanitised (sampling_tables.h's sanitizedRgb: black when a channel is NaN,
+//   infinite or negative), as the lights and the reference read them.
 // - Level 0 samples the map bilinearly at each texel's centre direction (across the phi seam; rows
 //   clamped at the poles and at a hemisphere's horizon). A Hemisphere map (vemd's polar map) covers
 //   only y >= 0: texels whose centre lies below the horizon (y < 0) are black.
@@ -47,5 +49,9 @@ struct CubeMap {
 // The cube map of `map` (Sphere or Hemisphere layout, non-empty): facePx >= 1 texels a side and up
 // to `levels` >= 1 levels (fewer when a face size turns odd first: 64 px gives at most 7).
 [[nodiscard]] CubeMap cubeMapFromEnvMap(const EnvMap& map, int facePx, int levels);
+
+// The cube map whose level 0 is `base` (facePx >= 1), with its box-filtered chain of up to
+// `levels` >= 1 levels (the same rule as above).
+[[nodiscard]] CubeMap cubeMapFromLevel0(CubeMapLevel base, int levels);
 
 }  // namespace vem

@@ -213,5 +213,25 @@ TEST(CubeMap, MipChainStopsAtTheFirstOddFaceSizeAsTheProtocolSays) {
   EXPECT_EQ(cubeMapFromEnvMap(map, 12, 8).levels.size(), 3U);  // 12, 6, 3
 }
 
+TEST(CubeMap, NegativeAndNanPixelsAreBlackAsTheLightsReadThem) {
+  // sky.exr holds 11 negative pixels beside its sun (down to -3394): read raw, they took 12 % of
+  // the map's light out of its cube maps while the lights and the reference clamp them to black.
+  EnvMap map = EnvMap::filled(MapLayout::Sphere, 64, 32, glm::vec3(1.0F));
+  for (int x = 0; x < map.width; ++x) {
+    for (int y = 0; y < map.height; y += 2) {
+      const std::size_t i = 3 * (std::size_t(y) * std::size_t(map.width) + std::size_t(x));
+      map.rgb[i] = x % 2 == 0 ? -50.0F : std::nanf("");
+    }
+  }
+  const CubeMap cube = cubeMapFromEnvMap(map, 16, 1);
+  for (const std::vector<float>& face : cube.levels[0].faces) {
+    for (const float v : face) {
+      ASSERT_TRUE(std::isfinite(v));
+      ASSERT_GE(v, 0.0F);
+      ASSERT_LE(v, 1.0F);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vem

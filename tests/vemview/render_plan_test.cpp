@@ -57,6 +57,37 @@ TEST(RenderPlan, BackgroundAloneAsksForTheCubeMapButNoGlossyPass) {
   EXPECT_FALSE(plan.glossyPass);
 }
 
+TEST(RenderPlan, RatioShadingPrefiltersOnlyWhatTheMaterialsUseAndDropsTheLHPass) {
+  PlanRequest request;
+  request.shadingByRatio = true;
+  const RenderPlan diffuse = planFor(sphereOnPlane(scene::Material{}), request);
+  EXPECT_TRUE(diffuse.shadingByRatio);
+  EXPECT_TRUE(diffuse.cubeMap);  // the environment it prefilters
+  EXPECT_TRUE(diffuse.irradianceCube);
+  EXPECT_FALSE(diffuse.prefilteredCubes);  // no glossy material: no specular cube
+  scene::Material metal = glossyMaterial();
+  metal.diffuseAlbedo = glm::vec3(0.0F);
+  scene::Scene metalOnly = sphereOnPlane(metal);
+  metalOnly.meshes.erase(metalOnly.meshes.begin());  // no plane: no diffuse material left
+  const RenderPlan glossy = planFor(metalOnly, request);
+  EXPECT_FALSE(glossy.irradianceCube);
+  EXPECT_TRUE(glossy.prefilteredCubes);
+  EXPECT_FALSE(glossy.glossyPass);
+  EXPECT_FALSE(glossy.lighting.glossyPass);
+  EXPECT_NE(glossy.describe().find("shading by ratio"), std::string::npos);
+}
+
+TEST(RenderPlan, RatioShadingWithoutCubeMapsSaysWhyItShadesByTheLights) {
+  PlanRequest request;
+  request.shadingByRatio = true;
+  request.inputHasCubeMaps = false;  // a light file
+  const RenderPlan plan = planFor(sphereOnPlane(glossyMaterial()), request);
+  EXPECT_FALSE(plan.shadingByRatio);
+  EXPECT_TRUE(plan.glossyPass);
+  EXPECT_NE(plan.describe().find("shading by the lights (the input carries no cube map)"),
+            std::string::npos);
+}
+
 TEST(RenderPlan, LoneConvexObjectGetsNoShadowMaps) {
   scene::Scene s;
   s.materials = {scene::Material{}};

@@ -109,6 +109,26 @@ TEST_F(VemviewCli, GlossySceneGetsTheLHPassAndTheCubeMap) {
   EXPECT_NE(r.err.find("cube map ("), std::string::npos) << r.err;
 }
 
+TEST_F(VemviewCli, RatioShadingPrefiltersOnceAndSaysSoInThePlan) {
+  const CommandRun r = run(kSmall + "--scene default --renderer embree --shading ratio --frames 2 "
+                                    "--orbit 5 --out " + path("out"));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("shading by ratio (irradiance cube: a diffuse material, prefiltered cubes: "
+                       "a glossy material)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("glossy L/H pass"), std::string::npos) << r.err;
+  // The cube map does not change between the two frames: it is prefiltered for the first only.
+  const std::vector<nlohmann::json> lines = jsonLines(fs::path(path("out")) / "timing.jsonl");
+  ASSERT_EQ(lines.size(), 2U);
+  EXPECT_TRUE(lines[0].contains("prefilter_ms"));
+  EXPECT_FALSE(lines[1].contains("prefilter_ms"));
+}
+
+TEST_F(VemviewCli, RatioShadingOnTheOpenGlRendererIsAUsageError) {
+  expectRefused(kSmall + "--shading ratio --out " + path("out"), "--renderer embree", 2);
+}
+
 TEST_F(VemviewCli, LoneConvexObjectRendersWithoutShadowMaps) {
   const CommandRun r = run(kSmall + "--scene sphere --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -6,6 +6,7 @@
 //   vem_render_bench [--maps sky,studio,city,park] [--list-maps] [--table docs/render-accuracy.md]
 //                    [--plot docs/render-accuracy-vs-time.png] [--section build/render.md]
 //                    [--cache DIR] [--reference-error 0.01] [--no-gl]
+//   vem_render_bench --materials [--material "GGX 0.1,..."] [--dump DIR] ...  (material_study.h)
 #include <algorithm>
 #include <chrono>
 #include <fstream>
@@ -18,6 +19,7 @@
 
 #include "bench/machine_info.h"
 #include "bench/markdown_output.h"
+#include "bench/render/material_study.h"
 #include "bench/render/render_report.h"
 #include "bench/render/study_run.h"
 #include "mapio/map_file.h"
@@ -25,6 +27,7 @@
 namespace {
 
 using namespace vem::bench;
+
 
 struct BenchOptions {
   // One sound map per kind of light (--list-maps): an outdoor sun (58 % of the power in 0.1 % of
@@ -41,6 +44,9 @@ struct BenchOptions {
   int embreeFrames = 3;
   bool noGl = false;
   bool listMaps = false;
+  bool materials = false;  // the material study (material_study.h) instead of the sweeps
+  std::vector<std::string> materialNames;
+  std::string dumpDir;
   std::string sweeps = "abcde";
   std::string table;
   std::string plot;
@@ -85,6 +91,12 @@ int parse(int argc, char** argv, BenchOptions& o) {
       ->check(CLI::Range(1, 100));
   app.add_option("--embree-frames", o.embreeFrames)->check(CLI::Range(1, 100));
   app.add_flag("--no-gl", o.noGl, "Embree only (no OpenGL context)");
+  app.add_flag("--materials", o.materials,
+               "the material study of issue 20 (a sphere on a plane, one material at a time, "
+               "shading by the lights and by ratio) instead of the sweeps; writes --table");
+  app.add_option("--dump", o.dumpDir, "with --materials: side-by-side PNGs into this folder");
+  app.add_option("--material", o.materialNames, "with --materials: only these materials")
+      ->delimiter(',');
   app.add_flag("--list-maps", o.listMaps, "print how concentrated each HDRI's light is, and exit");
   app.add_option("--sweeps", o.sweeps, "the sweeps to run, e.g. ad (study_sweeps.h)");
   app.add_option("--table", o.table, "write the study (markdown) to this file");
@@ -224,6 +236,21 @@ int main(int argc, char** argv) {
   BenchOptions options;
   if (const int parsed = parse(argc, argv, options); parsed != 0) return parsed < 0 ? 0 : parsed;
   if (options.listMaps) return listMaps(options);
+  if (options.materials) {
+    MaterialStudyOptions study;
+    study.maps = options.maps;
+    study.hdriDir = options.hdriDir;
+    study.size = options.size;
+    study.referenceError = options.referenceError;
+    study.referenceMaxSamples = options.referenceMaxSamples;
+    study.cacheDir = options.cacheDir;
+    study.materials = options.materialNames;
+    study.dumpDir = options.dumpDir;
+    study.command = commandLine(argc, argv);
+    auto report = runMaterialStudy(study);
+    if (!report) return fail(report.error());
+    return emitMarkdown("vem_render_bench", *report, options.table) ? 0 : 1;
+  }
   StudyContext context;
   context.command = commandLine(argc, argv);
   context.machine = machineDescription();

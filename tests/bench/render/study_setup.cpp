@@ -136,6 +136,18 @@ std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& p
   return out;
 }
 
+std::expected<StudyScene, std::string> studySceneOf(scene::Scene scene) {
+  if (const std::string broken = scene::firstContractViolation(scene); !broken.empty()) {
+    return std::unexpected(scene.name + ": " + broken);
+  }
+  StudyScene out;
+  out.camera = scene::viewingCamera(scene);
+  out.key = sceneKey(scene, out.camera);
+  out.description = describeScene(scene);
+  out.scene = std::move(scene);
+  return out;
+}
+
 std::expected<StudyScene, std::string> studyScene() {
   scene::DefaultScene built = scene::defaultScene();
   if (const std::string broken = scene::firstContractViolation(built.scene); !broken.empty()) {

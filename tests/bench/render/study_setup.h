@@ -57,6 +57,9 @@ struct StudyScene {
   std::uint64_t key = 0;    // hash of the geometry, materials and camera (the reference cache key)
 };
 
+// `scene` seen by vemview's starting camera (scene::viewingCamera), with its key and description.
+[[nodiscard]] std::expected<StudyScene, std::string> studySceneOf(scene::Scene scene);
+
 // The glossy default scene (client/scene/default_scene.h) and vemview's starting camera.
 [[nodiscard]] std::expected<StudyScene, std::string> studyScene();
 

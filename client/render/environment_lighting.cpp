@@ -1,0 +1,344 @@
+#include "client/render/environment_lighting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/glm.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "client/render/cube_map_sampling.h"
+#include "client/render/shading_model.h"
+#include "core/color.h"
+#include "core/cube_map_lookup.h"
+
+namespace vem::render {
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+constexpr int kIrradianceSourceMaxPx = 32;
+// The prefiltered cubes have at least this many texels a side whatever their source: bilinear
+// reads clamp at face edges (cube_map_sampling.h), which leaves a step of half a texel's
+// variation at each edge, invisible at 16 px for a lobe that a coarser source resolves.
+constexpr int kMinPrefilteredFacePx = 16;
+constexpr int kAlbedoStrata = 64;  // per dimension: 4096 samples per table entry
+// Prefilter weights below this fraction of the lobe's peak are skipped (Phong and Blinn only,
+// whose weights need a pow).
+constexpr float kNegligibleWeight = 1e-4F;
+
+struct SourceTexel {
+  glm::vec3 dir;
+  glm::vec3 radianceSr;  // radiance times the texel's solid angle
+  float solidAngleSr = 0.0F;
+};
+
+// Level `level` of the cube, one entry per texel: direction, solid angle (2/F)^2 max|d|^3 (the
+// face's area element seen from the centre), and radiance times it. Non-finite texels count as
+// black.
+std::vector<SourceTexel> texelsOf(const CubeMapLevel& level) {
+  const int f = level.facePx;
+  std::vector<SourceTexel> out;
+  out.reserve(std::size_t(6 * f * f));
+  const float cellArea = (2.0F / float(f)) * (2.0F / float(f));
+  for (int face = 0; face < 6; ++face) {
+    const std::vector<float>& texels = level.faces[std::size_t(face)];
+    for (int row = 0; row < f; ++row) {
+      for (int column = 0; column < f; ++column) {
+        const glm::vec3 d = cubeTexelDirection(face, f, column + 0.5, row + 0.5);
+        const float m = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+        const float sr = cellArea * m * m * m;
+        const std::size_t i = 3 * (std::size_t(row) * std::size_t(f) + std::size_t(column));
+        glm::vec3 radiance(texels[i], texels[i + 1], texels[i + 2]);
+        if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
+            !std::isfinite(radiance.z)) {
+          radiance = glm::vec3(0.0F);
+        }
+        out.push_back(SourceTexel{d, radiance * sr, sr});
+      }
+    }
+  }
+  return out;
+}
+
+// The first level whose face is at most facePx (the smallest level when every face is larger).
+const CubeMapLevel& levelAtMost(const CubeMap& cube, int facePx) {
+  for (const CubeMapLevel& level : cube.levels) {
+    if (level.facePx <= facePx) return level;
+  }
+  return cube.levels.back();
+}
+
+// A one-level cube of facePx texels a side whose texel in direction d is value(d).
+template <typename Value>
+CubeMap cubeOf(int facePx, const Value& value) {
+  CubeMap cube;
+  CubeMapLevel& level = cube.levels.emplace_back();
+  level.facePx = facePx;
+  for (auto& face : level.faces) face.assign(std::size_t(3 * facePx * facePx), 0.0F);
+  const int texelCount = 6 * facePx * facePx;
+  tbb::parallel_for(tbb::blocked_range<int>(0, texelCount), [&](const tbb::blocked_range<int>& r) {
+    for (int t = r.begin(); t != r.end(); ++t) {
+      const int face = t / (facePx * facePx);
+      const int row = (t / facePx) % facePx;
+      const int column = t % facePx;
+      const glm::vec3 v = value(cubeTexelDirection(face, facePx, column + 0.5, row + 0.5));
+      const std::size_t i = 3 * (std::size_t(row) * std::size_t(facePx) + std::size_t(column));
+      std::vector<float>& out = level.faces[std::size_t(face)];
+      out[i] = v.x;
+      out[i + 1] = v.y;
+      out[i + 2] = v.z;
+    }
+  });
+  return cube;
+}
+
+// The lobe's angular width in l at a tenth of its peak, radians (for the prefilter resolution).
+float lobeWidthRad(const scene::Material& m) {
+  switch (m.lobe) {
+    case scene::Lobe::Ggx: {
+      const float a = m.roughness * m.roughness;
+      return 2.0F * std::atan(1.47F * a);  // D falls to a tenth at tan(theta_h) = 1.47 alpha
+    }
+    case scene::Lobe::Blinn:
+      return 2.0F * std::acos(std::pow(0.1F, 1.0F / std::max(m.exponent, 1e-3F)));
+    case scene::Lobe::Phong:
+      return std::acos(std::pow(0.1F, 1.0F / std::max(m.exponent, 1e-3F)));
+    case scene::Lobe::Lambertian: break;
+  }
+  return kPi;
+}
+
+// An orthonormal frame around unit z: t, b with t x b = z.
+void frameAround(glm::vec3 z, glm::vec3& t, glm::vec3& b) {
+  const glm::vec3 helper = std::abs(z.y) < 0.9F ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  t = glm::normalize(glm::cross(helper, z));
+  b = glm::cross(z, t);
+}
+
+// A direction at polar cosine cosTheta and azimuth phi around z.
+glm::vec3 around(glm::vec3 z, float cosTheta, float phi) {
+  glm::vec3 t;
+  glm::vec3 b;
+  frameAround(z, t, b);
+  const float sinTheta = std::sqrt(std::max(0.0F, 1.0F - cosTheta * cosTheta));
+  return glm::normalize(sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b +
+                        cosTheta * z);
+}
+
+// One stratified importance sample of the lobe at (u1, u2): the light direction and its density
+// over solid angle; density 0 for a sample to skip.
+struct LobeSample {
+  glm::vec3 wi;
+  float pdfSr = 0.0F;
+};
+
+LobeSample sampleLobe(const scene::Material& m, glm::vec3 n, glm::vec3 wo, float u1, float u2) {
+  const float phi = 2.0F * kPi * u2;
+  if (m.lobe == scene::Lobe::Phong) {
+    const float e = m.exponent;
+    const float cosTheta = std::pow(u1, 1.0F / (e + 1.0F));
+    const glm::vec3 r = reflectedDirection(n, wo);
+    return {around(r, cosTheta, phi), (e + 1.0F) / (2.0F * kPi) * std::pow(cosTheta, e)};
+  }
+  float cosH = 1.0F;
+  float pdfHalf = 0.0F;
+  if (m.lobe == scene::Lobe::Ggx) {
+    const float a = m.roughness * m.roughness;
+    const float a2 = a * a;
+    const float tan2 = a2 * u1 / std::max(1.0F - u1, 1e-7F);
+    cosH = 1.0F / std::sqrt(1.0F + tan2);
+    pdfHalf = ggxDistribution(cosH, a2) * cosH;
+  } else {  // Blinn: density (e + 2) / (2 pi) cos^(e + 1) over h
+    const float e = m.exponent;
+    cosH = std::pow(u1, 1.0F / (e + 2.0F));
+    pdfHalf = (e + 2.0F) / (2.0F * kPi) * std::pow(cosH, e + 1.0F);
+  }
+  const glm::vec3 h = around(n, cosH, phi);
+  const float woH = glm::dot(wo, h);
+  if (woH <= 0.0F) return {h, 0.0F};
+  return {2.0F * woH * h - wo, pdfHalf / (4.0F * woH)};
+}
+
+// The integral of f_s (n . l) over l for n . wo = mu, by stratified importance sampling.
+float albedoAt(const scene::Material& m, float mu) {
+  const glm::vec3 n(0.0F, 0.0F, 1.0F);
+  const glm::vec3 wo(std::sqrt(std::max(0.0F, 1.0F - mu * mu)), 0.0F, mu);
+  double sum = 0.0;
+  for (int i = 0; i < kAlbedoStrata; ++i) {
+    for (int j = 0; j < kAlbedoStrata; ++j) {
+      const float u1 = (float(i) + 0.5F) / kAlbedoStrata;
+      const float u2 = (float(j) + 0.5F) / kAlbedoStrata;
+      const LobeSample s = sampleLobe(m, n, wo, u1, u2);
+      const float cosI = glm::dot(n, s.wi);
+      if (s.pdfSr <= 0.0F || cosI <= 0.0F) continue;
+      sum += double(specularBrdf(m, n, wo, s.wi).x * cosI / s.pdfSr);
+    }
+  }
+  return float(sum / double(kAlbedoStrata * kAlbedoStrata));
+}
+
+// The mean luminance of level 0 over the sphere, solid-angle weighted.
+double meanLuminance(const CubeMapLevel& level) {
+  double sum = 0.0;
+  double sr = 0.0;
+  for (const SourceTexel& t : texelsOf(level)) {
+    sum += luminance(t.radianceSr);
+    sr += double(t.solidAngleSr);
+  }
+  return sr > 0.0 ? sum / sr : 0.0;
+}
+
+// The cube with every level-0 texel's luminance clipped at peak (hue kept), its chain rebuilt.
+CubeMap clippedAt(const CubeMap& radiance, float peak) {
+  CubeMapLevel base = radiance.levels.front();
+  for (std::vector<float>& face : base.faces) {
+    for (std::size_t i = 0; i + 2 < face.size(); i += 3) {
+      const auto y = float(luminance(glm::vec3(face[i], face[i + 1], face[i + 2])));
+      if (y > peak) {
+        const float scale = peak / y;
+        face[i] *= scale;
+        face[i + 1] *= scale;
+        face[i + 2] *= scale;
+      }
+    }
+  }
+  return cubeMapFromLevel0(std::move(base), int(radiance.levels.size()));
+}
+
+}  // namespace
+
+DirectionalAlbedo directionalAlbedoOf(const scene::Material& material) {
+  DirectionalAlbedo table;
+  if (material.lobe == scene::Lobe::Lambertian) return table;
+  scene::Material zero = material;
+  zero.specularAlbedo = glm::vec3(0.0F);
+  scene::Material one = material;
+  one.specularAlbedo = glm::vec3(1.0F);
+  for (int i = 0; i < kAlbedoTableSize; ++i) {
+    const float mu = (float(i) + 0.5F) / kAlbedoTableSize;
+    const float atZero = albedoAt(zero, mu);  // only GGX's Fresnel term is non-zero at F0 = 0
+    table.bias[std::size_t(i)] = atZero;
+    table.scale[std::size_t(i)] = albedoAt(one, mu) - atZero;
+  }
+  return table;
+}
+
+glm::vec3 directionalAlbedo(const DirectionalAlbedo& table, const scene::Material& material,
+                            float cosNormalEye) {
+  const float x = std::clamp(cosNormalEye * kAlbedoTableSize - 0.5F, 0.0F,
+                             float(kAlbedoTableSize - 1));
+  const int i0 = int(x);
+  const int i1 = std::min(i0 + 1, kAlbedoTableSize - 1);
+  const float w = x - float(i0);
+  const float scale = glm::mix(table.scale[std::size_t(i0)], table.scale[std::size_t(i1)], w);
+  const float bias = glm::mix(table.bias[std::size_t(i0)], table.bias[std::size_t(i1)], w);
+  return material.specularAlbedo * scale + glm::vec3(bias);
+}
+
+int prefilterFacePxOf(const scene::Material& material) {
+  const float texelRad = lobeWidthRad(material) / 3.0F;  // a texel spans (pi / 2) / F
+  int facePx = 4;
+  while (facePx < kMaxPrefilterFacePx && kPi / 2.0F / float(facePx) > texelRad) facePx *= 2;
+  return facePx;
+}
+
+CubeMap irradianceCubeOf(const CubeMap& radiance, int facePx) {
+  const std::vector<SourceTexel> source = texelsOf(levelAtMost(radiance, kIrradianceSourceMaxPx));
+  return cubeOf(facePx, [&](glm::vec3 n) {
+    glm::vec3 sum(0.0F);
+    for (const SourceTexel& s : source) {
+      sum += s.radianceSr * std::max(0.0F, glm::dot(n, s.dir));
+    }
+    return sum;
+  });
+}
+
+CubeMap prefilteredCubeOf(const CubeMap& radiance, const scene::Material& material) {
+  const int facePx = prefilterFacePxOf(material);
+  const std::vector<SourceTexel> source = texelsOf(levelAtMost(radiance, facePx));
+  const bool ggx = material.lobe == scene::Lobe::Ggx;
+  const float a = material.roughness * material.roughness;
+  const float a2 = a * a;
+  const float e = std::max(material.exponent, 0.0F);
+  // Phong's weight is (R . l)^(e + 1); Blinn's cos(h)^e (R . l) with R . l = 2 cos(h)^2 - 1.
+  const float minCos = material.lobe == scene::Lobe::Phong
+                           ? std::pow(kNegligibleWeight, 1.0F / (e + 1.0F))
+                       : material.lobe == scene::Lobe::Blinn
+                           ? 2.0F * std::pow(std::pow(kNegligibleWeight, 1.0F / std::max(e, 1e-3F)),
+                                             2.0F) - 1.0F
+                           : 0.0F;
+  return cubeOf(std::max(facePx, kMinPrefilteredFacePx), [&](glm::vec3 r) {
+    glm::vec3 sum(0.0F);
+    float weights = 0.0F;
+    for (const SourceTexel& s : source) {
+      const float cosRL = glm::dot(r, s.dir);
+      if (cosRL <= minCos || cosRL <= 0.0F) continue;
+      float w = 0.0F;
+      if (material.lobe == scene::Lobe::Phong) {
+        w = std::pow(cosRL, e + 1.0F);
+      } else {
+        const float cosH = std::sqrt(0.5F * (1.0F + cosRL));  // R . h for h between R and l
+        w = (ggx ? ggxDistribution(cosH, a2) : std::pow(cosH, e)) * cosRL;
+      }
+      sum += w * s.radianceSr;
+      weights += w * s.solidAngleSr;
+    }
+    return weights > 0.0F ? sum / weights : glm::vec3(0.0F);
+  });
+}
+
+EnvironmentLighting makeEnvironmentLighting(const CubeMap& radiance,
+                                            std::span<const scene::Material> materials,
+                                            const EnvironmentLightingOptions& options) {
+  EnvironmentLighting out;
+  out.specular.resize(materials.size());
+  if (radiance.levels.empty()) return out;
+  if (options.diffuse) out.irradiance = irradianceCubeOf(radiance, options.irradianceFacePx);
+  if (!options.specular) return out;
+  out.peakLuminance = float(options.peakFactor * meanLuminance(radiance.levels.front()));
+  std::optional<CubeMap> clipped;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    const scene::Material& m = materials[i];
+    if (!m.glossy() || m.mirrorLike()) continue;
+    if (!clipped) clipped = clippedAt(radiance, out.peakLuminance);
+    out.specular[i] = SpecularEnvironment{prefilteredCubeOf(*clipped, m), directionalAlbedoOf(m)};
+  }
+  return out;
+}
+
+std::vector<float> peakFractionsOf(const EnvironmentLighting& lighting, const CubeMap& radiance,
+                                   std::span<const Light> lights) {
+  std::vector<float> out(lights.size(), 0.0F);
+  const bool anySpecular =
+      std::ranges::any_of(lighting.specular, [](const auto& s) { return s.has_value(); });
+  if (!anySpecular || radiance.levels.empty() || !(lighting.peakLuminance > 0.0F)) return out;
+  const CubeMapLevel& level = radiance.levels.front();
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    const CubeTexel t = cubeTexelOf(glm::dvec3(lights[i].dir), level.facePx);
+    const std::vector<float>& face = level.faces[std::size_t(t.face)];
+    const std::size_t k = 3 * (std::size_t(t.row) * std::size_t(level.facePx) + std::size_t(t.column));
+    const auto y = float(luminance(glm::vec3(face[k], face[k + 1], face[k + 2])));
+    out[i] = y > lighting.peakLuminance ? 1.0F - lighting.peakLuminance / y : 0.0F;
+  }
+  return out;
+}
+
+glm::vec3 unshadowedDiffuse(const EnvironmentLighting& lighting, const scene::Material& material,
+                            glm::vec3 n) {
+  if (lighting.irradiance.levels.empty()) return glm::vec3(0.0F);
+  return diffuseBrdf(material) * sampleCubeMapSeamless(lighting.irradiance, n);
+}
+
+glm::vec3 unshadowedSpecular(const EnvironmentLighting& lighting, std::size_t materialIndex,
+                             const scene::Material& material, glm::vec3 n, glm::vec3 wo) {
+  if (materialIndex >= lighting.specular.size() || !lighting.specular[materialIndex]) {
+    return glm::vec3(0.0F);
+  }
+  const SpecularEnvironment& env = *lighting.specular[materialIndex];
+  const glm::vec3 r = reflectedDirection(n, wo);
+  return sampleCubeMapSeamless(env.prefiltered, r) *
+         directionalAlbedo(env.albedo, material, glm::dot(n, wo));
+}
+
+}  // namespace vem::render

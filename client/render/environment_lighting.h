@@ -1,0 +1,111 @@
+// EnvironmentLighting: the unshadowed light a surface receives from the whole streamed environment,
+// prefiltered once per cube map for the BRDFs a scene uses (issue 20), so that shading needs no
+// lights for it, has no noise and shows no spot per light:
+//
+// - diffuse: the irradiance E(n) = integral of L(l) max(0, n . l) dl, tabulated on a small cube
+//   (irradianceFacePx a side) and read bilinearly; the diffuse radiance is diffuseBrdf E(n).
+// - specular (per glossy, non-mirror material): the split-sum approximation. The integral of
+//   f_s(l, wo) L(l) (n . l) dl is taken as P(R) rho(n . wo):
+//     P(R)      the environment averaged over the lobe with n = wo = R (R: wo mirrored about n),
+//               weights w(l) = D(h) max(0, R . l) for GGX and Blinn (h the half vector of R and l,
+//               D the material's distribution), max(0, R . l)^(e + 1) for Phong, summed over the
+//               input level whose texels resolve the lobe (a third of its width at a tenth of its
+//               peak, at most kMaxPrefilterFacePx a side: prefilterFacePxOf), onto a cube of that
+//               size or 16 px, whichever is larger;
+//     rho(mu)   the material's directional albedo, the integral of f_s (n . l) over l for
+//               n . wo = mu: tabulated at kAlbedoTableSize cosines by stratified importance
+//               sampling of the same BRDF functions the renderers call (shading_model.h), so it
+//               carries their exact Smith G and Schlick F; rho is linear in F0, stored as
+//               rho = F0 scale + bias.
+// The split sum assumes the lobe's shape does not depend on the view (n = wo = R): with a small
+// bright source it is far off (on studio.exr, GGX alpha 0.3: 0.14 to 2.3 times the exact
+// integral, docs/render-accuracy.md). So the specular cubes are prefiltered from the environment
+// with its peaks clipped at peakLuminance (texels brighter than peakFactor times the map's mean
+// luminance are scaled down to it, hue kept), and the clipped light is left to the lights: each
+// light carries the share peakFractionsOf gives it, 1 - T / Y of the texel under it, whose
+// specular sum the renderer takes exactly, light by light (in expectation the lights' shares sum
+// to the clipped energy, since they sample the map in proportion to its luminance).
+//
+// The input is a cube map as core/cube_map.h makes it and vemd streams it (every level a box
+// filter of the one above); texels below a Hemisphere map's horizon are black there, and add
+// nothing. Integrals run over the texels of one input level, each weighted by its exact solid
+// angle.
+// Pure: no state, thread-safe; the two builders run on TBB's worker threads.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "client/scene/scene.h"
+#include "core/cube_map.h"
+#include "core/light.h"
+
+namespace vem::render {
+
+inline constexpr int kAlbedoTableSize = 32;
+inline constexpr int kMaxPrefilterFacePx = 32;
+
+// rho(mu) = specularAlbedo * scale(mu) + bias(mu), mu = n . wo in (0, 1], linear between entries
+// at mu_i = (i + 0.5) / kAlbedoTableSize (clamped at the ends).
+struct DirectionalAlbedo {
+  std::array<float, kAlbedoTableSize> scale{};
+  std::array<float, kAlbedoTableSize> bias{};
+};
+
+struct SpecularEnvironment {
+  CubeMap prefiltered;  // P(R), one level
+  DirectionalAlbedo albedo;
+};
+
+struct EnvironmentLighting {
+  CubeMap irradiance;  // E(n), one level; empty when not built (no diffuse material)
+  float peakLuminance = 0.0F;  // T: the specular cubes hold the environment clipped at T
+  // One entry per scene material: set for glossy materials that are not mirror-like.
+  std::vector<std::optional<SpecularEnvironment>> specular;
+};
+
+struct EnvironmentLightingOptions {
+  int irradianceFacePx = 16;
+  bool diffuse = true;  // build the irradiance cube
+  bool specular = true;  // build the glossy materials' prefiltered cubes
+  double peakFactor = 20.0;  // T = peakFactor x the mean luminance of the environment
+};
+
+// The directional albedo table of a glossy material (0 everywhere for a Lambertian one).
+[[nodiscard]] DirectionalAlbedo directionalAlbedoOf(const scene::Material& material);
+[[nodiscard]] glm::vec3 directionalAlbedo(const DirectionalAlbedo& table,
+                                          const scene::Material& material, float cosNormalEye);
+
+// The face size of the cube that resolves the material's lobe (a power of two in
+// [4, kMaxPrefilterFacePx]).
+[[nodiscard]] int prefilterFacePxOf(const scene::Material& material);
+
+// E(n) on a facePx cube, from the input level whose face is at most 32 px.
+[[nodiscard]] CubeMap irradianceCubeOf(const CubeMap& radiance, int facePx);
+// P(R) for one glossy material.
+[[nodiscard]] CubeMap prefilteredCubeOf(const CubeMap& radiance, const scene::Material& material);
+
+[[nodiscard]] EnvironmentLighting makeEnvironmentLighting(
+    const CubeMap& radiance, std::span<const scene::Material> materials,
+    const EnvironmentLightingOptions& options = {});
+
+// Per light, the share of its rgb that the clipped specular cubes leave out: 1 - T / Y of the
+// radiance cube's level-0 texel under it, 0 where Y <= T (all 0 without a prefiltered cube).
+[[nodiscard]] std::vector<float> peakFractionsOf(const EnvironmentLighting& lighting,
+                                                 const CubeMap& radiance,
+                                                 std::span<const Light> lights);
+
+// The unshadowed radiances toward wo (n unit, turned toward wo): diffuseBrdf E(n), and
+// P(R) rho(n . wo) (0 without a prefiltered cube for the material).
+[[nodiscard]] glm::vec3 unshadowedDiffuse(const EnvironmentLighting& lighting,
+                                          const scene::Material& material, glm::vec3 n);
+[[nodiscard]] glm::vec3 unshadowedSpecular(const EnvironmentLighting& lighting,
+                                           std::size_t materialIndex,
+                                           const scene::Material& material, glm::vec3 n,
+                                           glm::vec3 wo);
+
+}  // namespace vem::render

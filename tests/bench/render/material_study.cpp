@@ -1,0 +1,233 @@
+#include "bench/render/material_study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "bench/render/reference_cache.h"
+#include "bench/render/study_setup.h"
+#include "client/embree/light_renderer.h"
+#include "client/embree/reference_renderer.h"
+#include "client/render/environment_lighting.h"
+#include "client/render/image_files.h"
+#include "client/render/image_metrics.h"
+#include "client/render/tone_mapping.h"
+#include "client/scene/default_scene.h"
+
+namespace vem::bench {
+namespace {
+
+struct StudyMaterial {
+  std::string name;
+  scene::Material material;
+};
+
+scene::Material ggx(float alpha, glm::vec3 f0) {
+  scene::Material m;
+  m.lobe = scene::Lobe::Ggx;
+  m.roughness = std::sqrt(alpha);  // scene.h: alpha = roughness^2
+  m.specularAlbedo = f0;
+  m.diffuseAlbedo = glm::vec3(0.0F);
+  return m;
+}
+
+scene::Material phong(float exponent) {
+  scene::Material m;
+  m.lobe = scene::Lobe::Phong;
+  m.exponent = exponent;
+  m.specularAlbedo = glm::vec3(0.5F);
+  m.diffuseAlbedo = glm::vec3(0.3F);
+  return m;
+}
+
+std::vector<StudyMaterial> studyMaterials() {
+  const glm::vec3 gold(0.9F, 0.7F, 0.35F);
+  scene::Material diffuse;
+  diffuse.diffuseAlbedo = glm::vec3(0.8F);
+  return {{"diffuse", diffuse},
+          {"GGX 0.1", ggx(0.1F, gold)},
+          {"GGX 0.3", ggx(0.3F, gold)},
+          {"GGX 0.6", ggx(0.6F, gold)},
+          {"Phong 10", phong(10.0F)},
+          {"Phong 100", phong(100.0F)},
+          {"mirror", ggx(0.0004F, glm::vec3(0.9F))}};
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The reference's error against its samples per pixel: c in e = c / sqrt(spp), and its time per
+// sample per pixel.
+struct ReferenceCurve {
+  std::vector<std::pair<int, double>> points;  // spp, relative RMS against the converged one
+  std::vector<double> seconds;
+  double c = 0.0;
+  double secondsPerSample = 0.0;
+  [[nodiscard]] double secondsToReach(double error) const {
+    return error > 0.0 ? (c / error) * (c / error) * secondsPerSample : 0.0;
+  }
+};
+
+ReferenceCurve referenceCurve(const embree::EmbreeScene& embreeScene, const StudyScene& scene,
+                              const StudyMap& map, StudyImageSize size,
+                              const render::LinearImage& converged) {
+  ReferenceCurve curve;
+  for (const int spp : {4, 16, 64}) {
+    embree::ReferenceOptions o;
+    o.seed = 0xc0ffeeULL;  // not the converged reference's: its first samples would correlate
+    o.samplesPerPass = std::min(spp, 16);
+    o.minSamples = spp;
+    o.maxSamples = spp;
+    o.targetRelativeError = 0.0;
+    const auto start = std::chrono::steady_clock::now();
+    const embree::ReferenceResult r =
+        embree::renderReference(embreeScene, scene.camera, size.widthPx, size.heightPx, map.map, o);
+    curve.seconds.push_back(secondsSince(start));
+    curve.points.emplace_back(spp, render::compareImages(r.image, converged).relativeRms);
+  }
+  // c from the 16-spp point (the 64-spp one carries more of the converged reference's own noise),
+  // the time per sample from the 64-spp render (the least fixed cost per sample).
+  curve.c = curve.points[1].second * std::sqrt(16.0);
+  curve.secondsPerSample = curve.seconds[2] / 64.0;
+  return curve;
+}
+
+struct Row {
+  std::string material;
+  std::string map;
+  std::size_t lights = 0;
+  std::string shading;
+  double error = 0.0;
+  double frameMs = 0.0;
+  double referenceSeconds = 0.0;
+};
+
+std::string percent(double x) { return fmt::format("{:.2f} %", 100.0 * x); }
+
+// reference | lights | ratio, left to right, each tone-mapped with the reference's parameters.
+void dumpSideBySide(const std::string& path, const render::LinearImage& reference,
+                    const render::LinearImage& lights, const render::LinearImage& ratio) {
+  render::ToneSmoother smoother;
+  const render::ToneParams params = smoother.update(render::measureLuminance(reference), 0.0);
+  const int w = reference.widthPx;
+  const int h = reference.heightPx;
+  std::vector<std::uint8_t> out(std::size_t(3 * w * 3 * h));
+  const render::LinearImage* images[] = {&reference, &lights, &ratio};
+  for (int k = 0; k < 3; ++k) {
+    const std::vector<std::uint8_t> one = render::toneMappedSrgb8(*images[k], params);
+    for (int y = 0; y < h; ++y) {
+      std::copy_n(one.begin() + std::ptrdiff_t(3 * y * w), 3 * w,
+                  out.begin() + std::ptrdiff_t(3 * (y * 3 * w + k * w)));
+    }
+  }
+  (void)render::saveSrgbPng(out, 3 * w, h, path);
+}
+
+}  // namespace
+
+std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  const render::LightingGeometry geometry = render::makeLightingGeometry();
+  std::vector<StudyMap> maps;
+  for (const std::string& name : options.maps) {
+    auto map = loadStudyMap(std::filesystem::path(options.hdriDir) / (name + ".exr"));
+    if (!map) return std::unexpected(map.error());
+    maps.push_back(std::move(*map));
+  }
+  std::vector<Row> rows;
+  std::string curves;
+  std::string prefilter;
+  for (const StudyMaterial& material : studyMaterials()) {
+    if (!options.materials.empty() &&
+        std::ranges::find(options.materials, material.name) == options.materials.end()) {
+      continue;
+    }
+    scene::Scene sceneWithMaterial = *scene::builtinScene("spheres");
+    sceneWithMaterial.materials[0] = material.material;
+    sceneWithMaterial.materials[0].name = "sphere";
+    sceneWithMaterial.name = "spheres, sphere " + material.name;
+    auto scene = studySceneOf(std::move(sceneWithMaterial));
+    if (!scene) return std::unexpected(scene.error());
+    auto embreeScene = embree::EmbreeScene::build(scene->scene);
+    if (!embreeScene) return std::unexpected(embreeScene.error());
+    for (const StudyMap& map : maps) {
+      embree::ReferenceOptions referenceOptions;
+      referenceOptions.targetRelativeError = options.referenceError;
+      referenceOptions.maxSamples = options.referenceMaxSamples;
+      auto reference = cachedReference(*embreeScene, *scene, map, options.size.widthPx,
+                                       options.size.heightPx, referenceOptions, options.cacheDir);
+      if (!reference) return std::unexpected(reference.error());
+      const ReferenceCurve curve =
+          referenceCurve(*embreeScene, *scene, map, options.size, reference->image);
+      curves += fmt::format("| {} | {} | {} spp, {:.1f} s{} | {} | {} | {} | {:.3f} |\n",
+                            material.name, map.name, reference->samplesPerPixel,
+                            reference->renderSeconds, reference->fromCache ? " (cached)" : "",
+                            percent(reference->relativeError), percent(curve.points[0].second),
+                            percent(curve.points[1].second), curve.seconds[2] / 64.0 * 1e3);
+      const auto prefilterStart = std::chrono::steady_clock::now();
+      const render::EnvironmentLighting environment =
+          render::makeEnvironmentLighting(map.cube, scene->scene.materials);
+      prefilter += fmt::format("| {} | {} | {:.1f} |\n", material.name, map.name,
+                               secondsSince(prefilterStart) * 1e3);
+      for (const std::size_t n : options.counts) {
+        std::vector<render::LinearImage> images;
+        for (const bool byRatio : {false, true}) {
+          render::LightingOptions lighting;
+          lighting.lightCount = n;
+          lighting.shadowedCount = 0;  // Embree traces a ray per light
+          lighting.glossyPass = !byRatio && scene::anyGlossy(scene->scene);
+          lighting.clusterLayout = map.map.layout;
+          const render::ShadingLights lights =
+              render::buildShadingLights(map.lights, geometry, lighting);
+          embree::LightRenderOptions renderOptions;
+          renderOptions.environment = byRatio ? &environment : nullptr;
+          const auto start = std::chrono::steady_clock::now();
+          const render::LinearImage image = embree::renderWithLights(
+              *embreeScene, scene->camera, options.size.widthPx, options.size.heightPx, lights,
+              geometry, &map.cube, renderOptions);
+          Row row{material.name, map.name, n, byRatio ? "ratio" : "lights"};
+          row.frameMs = secondsSince(start) * 1e3;
+          row.error = render::compareImages(image, reference->image).relativeRms;
+          row.referenceSeconds = curve.secondsToReach(row.error);
+          fmt::print(stderr, "{} / {} / N {} / {}: {} in {:.0f} ms\n", material.name, map.name, n,
+                     row.shading, percent(row.error), row.frameMs);
+          rows.push_back(row);
+          images.push_back(image);
+        }
+        if (!options.dumpDir.empty()) {
+          std::filesystem::create_directories(options.dumpDir);
+          dumpSideBySide(fmt::format("{}/{}-{}-{}.png", options.dumpDir, material.name, map.name, n),
+                         reference->image, images[0], images[1]);
+        }
+      }
+    }
+  }
+  std::string out = fmt::format(
+      "Generated by `{}` in {:.0f} s. Embree, 2 threads, {} x {} pixels, one frame per point "
+      "(times drift by tens of per cent on this shared machine).\n\n",
+      options.command, secondsSince(started), options.size.widthPx, options.size.heightPx);
+  out +=
+      "| material | map | N | shading | error (relative RMS) | frame ms | reference's time to "
+      "that error, s | x faster than the reference |\n|---|---|---:|---|---:|---:|---:|---:|\n";
+  for (const Row& r : rows) {
+    out += fmt::format("| {} | {} | {} | {} | {} | {:.0f} | {:.2f} | {:.1f} |\n", r.material, r.map,
+                       r.lights, r.shading, percent(r.error), r.frameMs, r.referenceSeconds,
+                       r.referenceSeconds / (r.frameMs * 1e-3));
+  }
+  out +=
+      "\nThe references and their own curves (error against the converged reference at 4 and 16 "
+      "samples per pixel, another seed; time per sample per pixel):\n\n"
+      "| material | map | converged reference | its noise | 4 spp | 16 spp | ms per spp |\n"
+      "|---|---|---|---:|---:|---:|---:|\n" +
+      curves;
+  out += "\nPrefiltering (once per cube map, not per frame), ms:\n\n| material | map | ms |\n|---|---|---:|\n" +
+         prefilter;
+  return out;
+}
+
+}  // namespace vem::bench
