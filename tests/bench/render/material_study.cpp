@@ -24,6 +24,7 @@ namespace {
 struct StudyMaterial {
   std::string name;
   scene::Material material;
+  bool defaultScene = false;  // the default scene as it is (its own four materials)
 };
 
 scene::Material ggx(float alpha, glm::vec3 f0) {
@@ -54,7 +55,8 @@ std::vector<StudyMaterial> studyMaterials() {
           {"GGX 0.6", ggx(0.6F, gold)},
           {"Phong 10", phong(10.0F)},
           {"Phong 100", phong(100.0F)},
-          {"mirror", ggx(0.0004F, glm::vec3(0.9F))}};
+          {"mirror", ggx(0.0004F, glm::vec3(0.9F))},
+          {"default scene", scene::Material{}, true}};
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -147,11 +149,13 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
         std::ranges::find(options.materials, material.name) == options.materials.end()) {
       continue;
     }
-    scene::Scene sceneWithMaterial = *scene::builtinScene("spheres");
-    sceneWithMaterial.materials[0] = material.material;
-    sceneWithMaterial.materials[0].name = "sphere";
-    sceneWithMaterial.name = "spheres, sphere " + material.name;
-    auto scene = studySceneOf(std::move(sceneWithMaterial));
+    auto scene = material.defaultScene ? studyScene() : [&] {
+      scene::Scene sceneWithMaterial = *scene::builtinScene("spheres");
+      sceneWithMaterial.materials[0] = material.material;
+      sceneWithMaterial.materials[0].name = "sphere";
+      sceneWithMaterial.name = "spheres, sphere " + material.name;
+      return studySceneOf(std::move(sceneWithMaterial));
+    }();
     if (!scene) return std::unexpected(scene.error());
     auto embreeScene = embree::EmbreeScene::build(scene->scene);
     if (!embreeScene) return std::unexpected(embreeScene.error());

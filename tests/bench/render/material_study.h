@@ -1,6 +1,7 @@
 // The material study of issue 20 (`vem_render_bench --materials`): a sphere on a plane (the
 // built-in "spheres" scene, its sphere given one material at a time: diffuse, GGX alpha 0.1, 0.3
-// and 0.6, Phong 10 and 100, a mirror) under real HDRIs, drawn by the Embree renderer with the
+// and 0.6, Phong 10 and 100, a mirror), and the default scene as it is (the bunny, a gold GGX
+// sphere, a Blinn box, with vemview's starting camera), under real HDRIs, drawn by the Embree renderer with the
 // paper's sums over the lights (glossy L/H) and by ratio (the prefiltered environment shadowed by
 // the lights' ratio, light_renderer.h), at N = 16 ... 1024, each against the Monte Carlo reference
 // (cached like the main study's).
