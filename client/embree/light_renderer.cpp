@@ -79,6 +79,13 @@ glm::vec3 glossyLightsTerm(const Frame& frame, const ShadingPoint& p) {
   return sum;
 }
 
+// The cube map's reflection of a mirror-like material (unoccluded, as the GL renderer).
+glm::vec3 mirrorTerm(const Frame& frame, const ShadingPoint& p) {
+  const glm::vec3 r = render::reflectedDirection(p.normal, p.wo);
+  return render::mirrorReflectance(*p.material, p.normal, p.wo) *
+         render::sampleCubeMap(*frame.cube, r);
+}
+
 // Per channel S / U; 1 where U is 0 (nothing known to block), the luminance ratio for a channel
 // that carries under 1e-6 of the largest.
 glm::vec3 ratioOf(glm::vec3 shadowed, glm::vec3 unshadowed) {
@@ -134,8 +141,7 @@ glm::vec3 shadeByRatio(const Frame& frame, const ShadingPoint& p) {
     const glm::vec3 ratioS = glm::mix(ratioD, ratioOf(shadowedS, unshadowedS), t);
     radiance += render::unshadowedSpecular(env, materialIndex, m, p.normal, p.wo) * ratioS + peakS;
   } else if (m.mirrorLike() && frame.cube != nullptr) {
-    const glm::vec3 r = render::reflectedDirection(p.normal, p.wo);
-    radiance += render::mirrorReflectance(m, p.normal, p.wo) * render::sampleCubeMap(*frame.cube, r);
+    radiance += mirrorTerm(frame, p);
   }
   return radiance;
 }
@@ -144,9 +150,7 @@ glm::vec3 shade(const Frame& frame, const ShadingPoint& p) {
   if (frame.options.environment != nullptr) return shadeByRatio(frame, p);
   const scene::Material& m = *p.material;
   if (m.mirrorLike() && frame.cube != nullptr) {
-    const glm::vec3 r = render::reflectedDirection(p.normal, p.wo);
-    return diffuseLightsTerm(frame, p, false) +
-           render::mirrorReflectance(m, p.normal, p.wo) * render::sampleCubeMap(*frame.cube, r);
+    return diffuseLightsTerm(frame, p, false) + mirrorTerm(frame, p);
   }
   if (m.glossy() && frame.lights.glossy) {
     return diffuseLightsTerm(frame, p, false) + glossyLightsTerm(frame, p);
