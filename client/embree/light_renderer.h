@@ -23,8 +23,7 @@
 //   ratio_s = the same sums weighted by specularBrdf(dir_i) (1 - p_i)
 //   peaks   = sum_i specularBrdf(dir_i) rgb_i p_i max(0, n . dir_i) V_i
 // with p_i the light's share of the peaks the specular cubes leave out (peakFractionsOf, from the
-// cube map given here)
-// over the same diffuse lights (no L/H sets). A ratio whose denominator is 0 (no light faces the
+// cube map given here); every sum runs over the same diffuse lights (no L/H sets). A ratio whose denominator is 0 (no light faces the
 // surface) is 1: nothing is known to block the environment. Where few lights carry the specular
 // sums (their effective count, (sum y)^2 / sum y^2 of the terms' luminances y, under
 // minEffectiveLights: sharp lobes, few lights) ratio_s blends linearly into ratio_d, the wider
