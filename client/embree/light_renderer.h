@@ -52,7 +52,7 @@ struct LightRenderOptions {
   MapLayout cubeCoverage = MapLayout::Sphere;
   // Shading by ratio (above) when set; borrowed, built for this scene's materials.
   const render::EnvironmentLighting* environment = nullptr;
-  double minEffectiveLights = 4.0;
+  double minEffectiveLights = render::kMinEffectiveLights;
 };
 
 // widthPx, heightPx >= 1. `cube` may be null (black background, mirrors lit by the lights).

@@ -32,6 +32,11 @@ bool EnvironmentCube::update(const CubeMap* cube, std::uint64_t version) {
   return true;
 }
 
+void EnvironmentCube::unbind(GLenum unit) {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+}
+
 void EnvironmentCube::bind(GLenum unit) const {
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_CUBE_MAP, present_ ? texture_.id() : 0);

@@ -108,6 +108,9 @@ GLint GlProgram::location(const char* name) const {
 
 void GlProgram::set(const char* name, int value) const { glUniform1i(location(name), value); }
 void GlProgram::set(const char* name, float value) const { glUniform1f(location(name), value); }
+void GlProgram::set(const char* name, std::span<const float> values) const {
+  glUniform1fv(location(name), GLsizei(values.size()), values.data());
+}
 void GlProgram::set(const char* name, glm::vec2 value) const {
   glUniform2fv(location(name), 1, glm::value_ptr(value));
 }

@@ -8,6 +8,7 @@
 
 #include <expected>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -30,6 +31,7 @@ class GlProgram {
   // Uniform setters on the program in use (a missing uniform, location -1, is ignored as GL does).
   void set(const char* name, int value) const;
   void set(const char* name, float value) const;
+  void set(const char* name, std::span<const float> values) const;  // a float[] uniform
   void set(const char* name, glm::vec2 value) const;
   void set(const char* name, glm::ivec2 value) const;
   void set(const char* name, glm::vec3 value) const;

@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "client/gl/environment_cube.h"
+#include "client/gl/environment_lighting_textures.h"
 #include "client/gl/gl_mesh.h"
 #include "client/gl/gl_program.h"
 #include "client/gl/light_clip.h"
@@ -20,6 +21,9 @@ namespace {
 constexpr GLenum kShadowUnit = kFirstLightUnit + kLightUnitCount;  // 12
 constexpr GLenum kEnvironmentUnit = kShadowUnit + 1;                // 13
 constexpr GLenum kCasterUnit = kEnvironmentUnit + 1;                // 14
+constexpr GLenum kIrradianceUnit = kCasterUnit + 1;                 // 15
+constexpr GLenum kPrefilteredUnit = kIrradianceUnit + 1;            // 16
+constexpr GLint kFragmentUnitsNeeded = GLint(kPrefilteredUnit) + 1;
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -69,6 +73,7 @@ struct GlRenderer::Impl {
   LightTextures lights;
   ShadowAtlas atlas;
   EnvironmentCube environment;
+  EnvironmentLightingTextures environmentLighting;  // shading by ratio
   ToneMapPass toneMap;
   LightingTarget target;
   GlVertexArray emptyVertexArray = GlVertexArray::create();
@@ -82,7 +87,7 @@ struct GlRenderer::Impl {
   std::size_t shadowPass(const render::ShadingLights& frame, GlFrameStats& stats);
   void backgroundPass(const scene::OrbitCamera& camera) const;
   void geometryPass(const scene::OrbitCamera& camera, const render::ShadingLights& frame,
-                    std::size_t shadowMaps) const;
+                    std::size_t shadowMaps, const RatioShading& ratio) const;
   void setMaterial(const scene::Material& material, bool glossyPass) const;
 };
 
@@ -105,6 +110,13 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
   if (!atlas) return std::unexpected(atlas.error());
   auto toneMap = ToneMapPass::create(options.widthPx, options.heightPx);
   if (!toneMap) return std::unexpected(toneMap.error());
+  GLint fragmentUnits = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &fragmentUnits);
+  if (fragmentUnits < kFragmentUnitsNeeded) {
+    return std::unexpected("the lighting shader reads " + std::to_string(kFragmentUnitsNeeded) +
+                           " textures, and this OpenGL driver offers " +
+                           std::to_string(fragmentUnits) + " (GL_MAX_TEXTURE_IMAGE_UNITS)");
+  }
   auto target = makeLightingTarget(options.widthPx, options.heightPx);
   if (!target) return std::unexpected(target.error());
   const render::LightingGeometry ownGeometry =
@@ -115,7 +127,7 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
   auto impl = std::unique_ptr<Impl>(new Impl{
       options, scene::sceneBounds(scene), scene.materials, {}, std::move(*lighting),
       std::move(*background), std::move(*depth), LightTextures(geometry), std::move(*atlas),
-      EnvironmentCube(), std::move(*toneMap), std::move(*target), GlVertexArray::create(),
+      EnvironmentCube(), EnvironmentLightingTextures(), std::move(*toneMap), std::move(*target), GlVertexArray::create(),
       std::nullopt, TextureBuffer(GL_RGBA32F), 0, std::nullopt});
   if (options.presentToWindow) {
     auto overlay = OverlayPass::create();
@@ -198,7 +210,7 @@ void GlRenderer::Impl::setMaterial(const scene::Material& material, bool glossyP
 
 void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
                                     const render::ShadingLights& frame,
-                                    std::size_t shadowMaps) const {
+                                    std::size_t shadowMaps, const RatioShading& ratio) const {
   const float aspect = float(options.widthPx) / float(options.heightPx);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -220,16 +232,28 @@ void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
   environment.bind(kEnvironmentUnit);
   lighting.set("uEnvironment", int(kEnvironmentUnit));
   lighting.set("uHasEnvironment", environment.present() ? 1 : 0);
-  const bool glossyPass = frame.glossy.has_value();
+  const bool byRatio = ratio.lighting != nullptr;
+  lighting.set("uRatio", byRatio ? 1 : 0);
+  // Every sampler on its own unit, even unread: two sampler types on one unit fail the draw.
+  lighting.set("uIrradiance", int(kIrradianceUnit));
+  lighting.set("uPrefiltered", int(kPrefilteredUnit));
+  lighting.set("uMinEffectiveLights", float(ratio.minEffectiveLights));
+  if (byRatio) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  const bool glossyPass = frame.glossy.has_value() && !byRatio;
   for (const GlMesh& mesh : meshes) {
     setMaterial(materials.at(mesh.material()), glossyPass);
+    if (byRatio) {
+      environmentLighting.bindMaterial(lighting, mesh.material(), kIrradianceUnit,
+                                       kPrefilteredUnit);
+    }
     mesh.draw();
   }
+  glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 }
 
 GlFrameStats GlRenderer::render(const scene::OrbitCamera& camera,
                                 const render::ShadingLights& lights, const CubeMap* background,
-                                std::uint64_t backgroundVersion) {
+                                std::uint64_t backgroundVersion, const RatioShading& ratio) {
   Impl& s = *impl_;
   GlFrameStats stats;
   const auto start = std::chrono::steady_clock::now();
@@ -238,8 +262,13 @@ GlFrameStats GlRenderer::render(const scene::OrbitCamera& camera,
   stats.shadowPassMs = msSince(start);
 
   const auto lightingStart = std::chrono::steady_clock::now();
-  s.lights.upload(lights);
+  std::vector<float> peakFractions;
+  if (ratio.lighting != nullptr && background != nullptr) {
+    peakFractions = render::peakFractionsOf(*ratio.lighting, *background, lights.diffuse.lights);
+  }
+  s.lights.upload(lights, peakFractions);
   stats.backgroundUploaded = s.environment.update(background, backgroundVersion);
+  s.environmentLighting.update(ratio.lighting, ratio.version);
   glBindFramebuffer(GL_FRAMEBUFFER, s.target.framebuffer.id());
   glViewport(0, 0, s.options.widthPx, s.options.heightPx);
   glClearColor(0.0F, 0.0F, 0.0F, 0.0F);
@@ -247,7 +276,7 @@ GlFrameStats GlRenderer::render(const scene::OrbitCamera& camera,
   glDepthMask(GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (s.environment.present()) s.backgroundPass(camera);
-  s.geometryPass(camera, lights, shadowMaps);
+  s.geometryPass(camera, lights, shadowMaps, ratio);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glFinish();
   stats.lightingPassMs = msSince(lightingStart);

@@ -12,6 +12,12 @@
 // lightsKey (and caster count) as the previous frame, the maps are reused; empty diffuseLists, every
 // diffuse light is walked; no glossy sets, glossy materials take their specular lobe from the
 // diffuse lights; mirror-like materials reflect the cube map (black without one).
+//
+// With a RatioShading, shading by ratio instead (issue 20): the model and its sums are
+// client/embree/light_renderer.h's, term for term, over the diffuse lights and with the shadow
+// maps' visibility; the glossy L/H sets are not read. The prefiltered cubes are read with
+// GL_TEXTURE_CUBE_MAP_SEAMLESS (on for that pass only), as render::sampleCubeMapSeamless reads
+// them.
 #pragma once
 
 #include <cstddef>
@@ -23,6 +29,7 @@
 #include <string_view>
 #include <vector>
 
+#include "client/render/environment_lighting.h"
 #include "client/render/linear_image.h"
 #include "client/render/shading_lights.h"
 #include "client/render/tone_mapping.h"
@@ -47,6 +54,15 @@ struct GlRendererOptions {
   const render::LightingGeometry* geometry = nullptr;
 };
 
+// Shading by ratio: the unshadowed light from `lighting` (built for this renderer's scene's
+// materials from the frame's cube map, borrowed for the call), re-uploaded when (lighting,
+// version) differs from the last frame's. The peaks' shares are taken from the frame's cube map.
+struct RatioShading {
+  const render::EnvironmentLighting* lighting = nullptr;
+  std::uint64_t version = 0;
+  double minEffectiveLights = render::kMinEffectiveLights;
+};
+
 struct GlFrameStats {
   double shadowPassMs = 0.0;    // shadow maps, to glFinish
   double lightingPassMs = 0.0;  // light upload, background and geometry pass, to glFinish
@@ -66,8 +82,10 @@ class GlRenderer {
 
   // One frame into the float buffer. background: the cube map to show and reflect (nullptr:
   // black), re-uploaded only when (background, backgroundVersion) differs from the last frame's.
+  // ratio: shading by ratio when ratio.lighting is set (above).
   GlFrameStats render(const scene::OrbitCamera& camera, const render::ShadingLights& lights,
-                      const CubeMap* background, std::uint64_t backgroundVersion = 0);
+                      const CubeMap* background, std::uint64_t backgroundVersion = 0,
+                      const RatioShading& ratio = {});
   // The last frame: linear radiance, covered = 1 where geometry was drawn.
   [[nodiscard]] render::LinearImage readLinear() const;
   // Tone-maps the last frame (render::toneMap + sRGB) into the display image (and the window).

@@ -29,15 +29,18 @@ GlTexture regionCube(const AngularRegions& regions) {
   return texture;
 }
 
-// Two texels a light: (dir, slot), (rgb, 0); slot -1 when `slots` is empty.
-std::vector<float> packLights(const LightSet& set, const std::vector<std::int32_t>& slots) {
+// Two texels a light: (dir, slot), (rgb, peak fraction); slot -1 when `slots` is empty, peak 0
+// when `peaks` is.
+std::vector<float> packLights(const LightSet& set, const std::vector<std::int32_t>& slots,
+                              std::span<const float> peaks = {}) {
   std::vector<float> out;
   out.reserve(set.lights.size() * 8);
   for (std::size_t i = 0; i < set.lights.size(); ++i) {
     const Light& light = set.lights[i];
     const float slot = i < slots.size() ? float(slots[i]) : -1.0F;
+    const float peak = i < peaks.size() ? peaks[i] : 0.0F;
     out.insert(out.end(), {light.dir.x, light.dir.y, light.dir.z, slot, light.rgb.x, light.rgb.y,
-                           light.rgb.z, 0.0F});
+                           light.rgb.z, peak});
   }
   return out;
 }
@@ -64,12 +67,14 @@ LightTextures::LightTextures(const render::LightingGeometry& geometry) {
   cosCone_ = float(std::cos(geometry.glossyRegions.coneHalfAngleRad));
 }
 
-void LightTextures::upload(const render::ShadingLights& lights) {
+void LightTextures::upload(const render::ShadingLights& lights,
+                           std::span<const float> peakFractions) {
   const std::size_t n = lights.diffuse.lights.size();
-  // One shadow slot per diffuse light, or none.
+  // One shadow slot per diffuse light, or none; one peak fraction per diffuse light, or none.
   VEM_EXPECTS(lights.shadowSlotOfDiffuse.empty() || lights.shadowSlotOfDiffuse.size() == n);
-  diffuse_.lights.upload(std::span<const float>(packLights(lights.diffuse,
-                                                           lights.shadowSlotOfDiffuse)));
+  VEM_EXPECTS(peakFractions.empty() || peakFractions.size() == n);
+  diffuse_.lights.upload(std::span<const float>(
+      packLights(lights.diffuse, lights.shadowSlotOfDiffuse, peakFractions)));
   diffuseCount_ = int(n);
   diffuseRegions_ = !lights.diffuseLists.offsets.empty();
   if (diffuseRegions_) {

@@ -48,6 +48,9 @@ namespace vem::render {
 
 inline constexpr int kAlbedoTableSize = 32;
 inline constexpr int kMaxPrefilterFacePx = 32;
+// Below this effective count of lights carrying a point's specular sums, the renderers blend the
+// specular ratio into the diffuse one (client/embree/light_renderer.h).
+inline constexpr double kMinEffectiveLights = 4.0;
 
 // rho(mu) = specularAlbedo * scale(mu) + bias(mu), mu = n . wo in (0, 1], linear between entries
 // at mu_i = (i + 0.5) / kAlbedoTableSize (clamped at the ends).

@@ -9,7 +9,7 @@
 #include "client/embree/embree_scene.h"
 #include "client/embree/light_renderer.h"
 #include "client/embree/reference_renderer.h"
-#include "client/render/environment_lighting.h"
+#include "client/vemview/prefiltered_environment.h"
 
 namespace vem::view {
 namespace {
@@ -23,13 +23,8 @@ class EmbreeFrameRenderer final : public FrameRenderer {
  public:
   EmbreeFrameRenderer(const ViewerOptions& options, const RenderPlan& plan,
                       embree::EmbreeScene scene, const render::LightingGeometry& geometry)
-      : options_(options), scene_(std::move(scene)), geometry_(geometry) {
+      : options_(options), environment_(plan), scene_(std::move(scene)), geometry_(geometry) {
     lightOptions_.cubeCoverage = plan.cubeMapCoverage;
-    if (plan.shadingByRatio) {
-      environmentOptions_ = render::EnvironmentLightingOptions{};
-      environmentOptions_->diffuse = plan.irradianceCube;
-      environmentOptions_->specular = plan.prefilteredCubes;
-    }
   }
 
   std::string name() const override {
@@ -53,7 +48,10 @@ class EmbreeFrameRenderer final : public FrameRenderer {
       frame.timing["relative_error"] = result.relativeError;
       frame.timing["converged"] = result.converged;
     } else {
-      lightOptions_.environment = environmentFor(input.cube, frame);
+      const PrefilteredEnvironment::Current environment =
+          environment_.forCube(input.cube, scene_.materials());
+      if (environment.builtMs) frame.timing["prefilter_ms"] = *environment.builtMs;
+      lightOptions_.environment = environment.lighting;
       frame.image = embree::renderWithLights(scene_, camera, options_.widthPx, options_.heightPx,
                                              lights, geometry_, input.cube.get(), lightOptions_);
     }
@@ -62,25 +60,8 @@ class EmbreeFrameRenderer final : public FrameRenderer {
   }
 
  private:
-  // The prefiltered environment of the frame's cube map, rebuilt only when the cube map changes
-  // (the input hands out the same shared cube until a new one arrives); null without ratio
-  // shading or a cube map.
-  const render::EnvironmentLighting* environmentFor(const std::shared_ptr<const CubeMap>& cube,
-                                                    RenderedFrame& frame) {
-    if (!environmentOptions_ || cube == nullptr) return nullptr;
-    if (cube != environmentCube_) {
-      const auto start = std::chrono::steady_clock::now();
-      environment_ = render::makeEnvironmentLighting(*cube, scene_.materials(), *environmentOptions_);
-      environmentCube_ = cube;
-      frame.timing["prefilter_ms"] = msSince(start);
-    }
-    return &environment_;
-  }
-
   const ViewerOptions& options_;
-  std::optional<render::EnvironmentLightingOptions> environmentOptions_;
-  std::shared_ptr<const CubeMap> environmentCube_;
-  render::EnvironmentLighting environment_;
+  PrefilteredEnvironment environment_;
   embree::EmbreeScene scene_;
   const render::LightingGeometry& geometry_;
   embree::LightRenderOptions lightOptions_;

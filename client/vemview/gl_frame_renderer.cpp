@@ -8,6 +8,7 @@
 #include "client/gl/gl_context.h"
 #include "client/gl/gl_renderer.h"
 #include "client/render/image_files.h"
+#include "client/vemview/prefiltered_environment.h"
 
 namespace vem::view {
 namespace {
@@ -19,9 +20,14 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 class GlFrameRenderer final : public FrameRenderer {
  public:
-  GlFrameRenderer(const ViewerOptions& options, std::unique_ptr<gl::GlContext> context,
+  GlFrameRenderer(const ViewerOptions& options, const RenderPlan& plan,
+                  const scene::Scene& scene, std::unique_ptr<gl::GlContext> context,
                   std::unique_ptr<gl::GlRenderer> renderer)
-      : options_(options), context_(std::move(context)), renderer_(std::move(renderer)) {}
+      : options_(options),
+        materials_(scene.materials),
+        environment_(plan),
+        context_(std::move(context)),
+        renderer_(std::move(renderer)) {}
 
   ~GlFrameRenderer() override {
     if (!options_.screenshot.empty() && context_->isWindow()) {
@@ -39,9 +45,12 @@ class GlFrameRenderer final : public FrameRenderer {
   RenderedFrame render(const scene::OrbitCamera& camera, const render::ShadingLights& lights,
                        const InputFrame& input) override {
     const auto start = std::chrono::steady_clock::now();
-    const gl::GlFrameStats stats =
-        renderer_->render(camera, lights, input.cube.get(), input.cubeVersion);
     RenderedFrame frame;
+    const PrefilteredEnvironment::Current environment = environment_.forCube(input.cube, materials_);
+    if (environment.builtMs) frame.timing["prefilter_ms"] = *environment.builtMs;
+    const gl::GlFrameStats stats =
+        renderer_->render(camera, lights, input.cube.get(), input.cubeVersion,
+                          gl::RatioShading{environment.lighting, environment.version});
     const auto readStart = std::chrono::steady_clock::now();
     frame.image = renderer_->readLinear();
     frame.renderMs = msSince(start);
@@ -105,6 +114,8 @@ class GlFrameRenderer final : public FrameRenderer {
   }
 
   const ViewerOptions& options_;
+  std::vector<scene::Material> materials_;
+  PrefilteredEnvironment environment_;
   std::unique_ptr<gl::GlContext> context_;
   std::unique_ptr<gl::GlRenderer> renderer_;
   std::vector<std::uint8_t> lastDisplay_;
@@ -134,7 +145,8 @@ std::expected<std::unique_ptr<FrameRenderer>, std::string> makeGlFrameRenderer(
   if (!renderer) {
     return std::unexpected(renderer.error());
   }
-  return std::make_unique<GlFrameRenderer>(options, std::move(*context), std::move(*renderer));
+  return std::make_unique<GlFrameRenderer>(options, plan, scene, std::move(*context),
+                                           std::move(*renderer));
 }
 
 }  // namespace vem::view

@@ -103,7 +103,7 @@ void addLightingOptions(CLI::App& app, ViewerOptions& o) {
   choiceOf<ShadingKind>(
       app.add_option("--shading", o.shading,
                      "lights (the sums over the lights, glossy L/H: paper 004) or ratio (the "
-                     "prefiltered environment, shadowed by the lights' ratio; --renderer embree)"),
+                     "prefiltered environment, shadowed by the lights' ratio)"),
       {{"lights", ShadingKind::Lights}, {"ratio", ShadingKind::Ratio}})
       ->default_str("lights");
   app.add_option("--cluster", o.clusterBudget, "Cluster the lights toward about Q (0: off)")
@@ -194,9 +194,9 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
                  "--map FILE, not --connect or --lights (see 'vemview --help')\n";
     return std::unexpected(cli::kExitUsage);
   }
-  if (o.shading == ShadingKind::Ratio && o.renderer != RendererKind::Embree) {
-    std::cerr << "vemview: error: --shading ratio needs --renderer embree (the OpenGL renderer "
-                 "shades by the lights only, so far)\n";
+  if (o.shading == ShadingKind::Ratio && o.renderer == RendererKind::Reference) {
+    std::cerr << "vemview: error: --shading ratio is a way of shading with the lights: give it "
+                 "--renderer gl or embree, not reference (which integrates the map itself)\n";
     return std::unexpected(cli::kExitUsage);
   }
   if (o.headless && o.frames == 0) {

@@ -34,6 +34,8 @@ std::vector<nlohmann::json> jsonLines(const fs::path& path) {
   return lines;
 }
 
+const std::string kSmall = " --headless --width 64 --height 48 --count 16 --shadowed 8 ";
+
 class VemviewCli : public vem::testing::VemviewProcessTest {
  protected:
   CommandRun run(const std::string& args) const { return VemviewProcessTest::run("", args); }
@@ -49,9 +51,24 @@ class VemviewCli : public vem::testing::VemviewProcessTest {
     EXPECT_TRUE(r.err.starts_with("vemview: error: ")) << r.err;
     EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
   }
+  // Two frames of the default scene by ratio on `renderer`: the plan line says what is
+  // prefiltered and that the L/H pass is gone; the unchanged cube map is prefiltered once.
+  void expectRatioShadingPrefiltersOnce(const std::string& renderer) const {
+    const CommandRun r = run(kSmall + "--scene default --renderer " + renderer +
+                             " --shading ratio --frames 2 --orbit 5 --out " + path("out"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("shading by ratio (irradiance cube: a diffuse material, prefiltered cubes: "
+                         "a glossy material)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("glossy L/H pass"), std::string::npos) << r.err;
+    // The cube map does not change between the two frames: it is prefiltered for the first only.
+    const std::vector<nlohmann::json> lines = jsonLines(fs::path(path("out")) / "timing.jsonl");
+    ASSERT_EQ(lines.size(), 2U);
+    EXPECT_TRUE(lines[0].contains("prefilter_ms"));
+    EXPECT_FALSE(lines[1].contains("prefilter_ms"));
+  }
 };
-
-const std::string kSmall = " --headless --width 64 --height 48 --count 16 --shadowed 8 ";
 
 TEST_F(VemviewCli, HeadlessRunWritesPngExrAndOneTimingLinePerFrame) {
   const CommandRun r = run(kSmall + "--scene spheres --frames 2 --orbit 10 --out " + path("out"));
@@ -110,23 +127,16 @@ TEST_F(VemviewCli, GlossySceneGetsTheLHPassAndTheCubeMap) {
 }
 
 TEST_F(VemviewCli, RatioShadingPrefiltersOnceAndSaysSoInThePlan) {
-  const CommandRun r = run(kSmall + "--scene default --renderer embree --shading ratio --frames 2 "
-                                    "--orbit 5 --out " + path("out"));
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.err.find("shading by ratio (irradiance cube: a diffuse material, prefiltered cubes: "
-                       "a glossy material)"),
-            std::string::npos)
-      << r.err;
-  EXPECT_EQ(r.err.find("glossy L/H pass"), std::string::npos) << r.err;
-  // The cube map does not change between the two frames: it is prefiltered for the first only.
-  const std::vector<nlohmann::json> lines = jsonLines(fs::path(path("out")) / "timing.jsonl");
-  ASSERT_EQ(lines.size(), 2U);
-  EXPECT_TRUE(lines[0].contains("prefilter_ms"));
-  EXPECT_FALSE(lines[1].contains("prefilter_ms"));
+  for (const std::string renderer : {"gl", "embree"}) {
+    SCOPED_TRACE(renderer);
+    fs::remove_all(dir_ / "out");
+    expectRatioShadingPrefiltersOnce(renderer);
+  }
 }
 
-TEST_F(VemviewCli, RatioShadingOnTheOpenGlRendererIsAUsageError) {
-  expectRefused(kSmall + "--shading ratio --out " + path("out"), "--renderer embree", 2);
+TEST_F(VemviewCli, RatioShadingOnTheReferenceRendererIsAUsageError) {
+  expectRefused(kSmall + "--renderer reference --shading ratio --out " + path("out"),
+                "not reference", 2);
 }
 
 TEST_F(VemviewCli, LoneConvexObjectRendersWithoutShadowMaps) {

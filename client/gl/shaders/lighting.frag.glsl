@@ -2,7 +2,8 @@
 // textures (light_textures.h): light i is texels 2i = (dir, shadow slot) and 2i+1 = (rgb, 0) of
 // an RGBA32F buffer texture; a region list is a flat index buffer plus an offsets buffer (region
 // r's lights are list[offsets[r] .. offsets[r + 1])), the region of a direction one read of an
-// integer cube map (core/angular_regions.h's regionOfTexel).
+// integer cube map (core/angular_regions.h's regionOfTexel). With uRatio, shading by ratio
+// instead: ratioShading below, the model client/embree/light_renderer.h states.
 in vec3 vPositionWorld;
 in vec3 vNormalWorld;
 out vec4 fragColor;
@@ -32,6 +33,19 @@ uniform int uMaxConeLights;   // k
 
 uniform samplerCube uEnvironment;
 uniform int uHasEnvironment;
+
+// Shading by ratio (issue 20; environment_lighting_textures.h). A diffuse light's second texel
+// carries its peak fraction p_i in w.
+uniform int uRatio;
+uniform samplerCube uIrradiance;  // E(n)
+uniform int uHasIrradiance;
+uniform samplerCube uPrefiltered;  // the material's P(R)
+uniform int uSpecularByRatio;      // the material has a prefiltered cube
+uniform float uAlbedoScale[32];    // render::kAlbedoTableSize entries of rho = F0 scale + bias
+uniform float uAlbedoBias[32];
+uniform float uMinEffectiveLights;
+
+const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);  // Rec. 709 (core/color.h)
 
 ivec2 regionRange(usamplerCube regions, usamplerBuffer offsets, vec3 dir) {
   int region = int(textureLod(regions, dir, 0.0).r);
@@ -89,12 +103,89 @@ vec3 glossyLighting(vec3 n, vec3 wo, vec3 p) {
   return cone + outside;
 }
 
+// Per channel S / U; 1 where U is 0 (nothing known to block), the luminance ratio for a channel
+// far below the others (light_renderer.cpp's ratioOf).
+vec3 ratioOf(vec3 shadowed, vec3 unshadowed) {
+  float largest = max(unshadowed.r, max(unshadowed.g, unshadowed.b));
+  if (!(largest > 0.0)) return vec3(1.0);
+  float overall = dot(kLuminance, shadowed) / max(dot(kLuminance, unshadowed), 1e-30);
+  vec3 ratio;
+  for (int c = 0; c < 3; ++c) {
+    ratio[c] = unshadowed[c] > 1e-6 * largest ? shadowed[c] / unshadowed[c] : overall;
+  }
+  return ratio;
+}
+
+// render::directionalAlbedo: linear between entries at mu_i = (i + 0.5) / 32, clamped.
+vec3 directionalAlbedo(float cosNormalEye) {
+  float x = clamp(cosNormalEye * 32.0 - 0.5, 0.0, 31.0);
+  int i0 = int(x);
+  int i1 = min(i0 + 1, 31);
+  float w = x - float(i0);
+  float scale = mix(uAlbedoScale[i0], uAlbedoScale[i1], w);
+  float bias = mix(uAlbedoBias[i0], uAlbedoBias[i1], w);
+  return uSpecularAlbedo * scale + vec3(bias);
+}
+
+// The unshadowed environment scaled by the lights' shadowed-to-unshadowed ratios, plus the
+// clipped peaks light by light, over the diffuse lights of n's region (light_renderer.cpp's
+// shadeByRatio, line for line).
+vec3 ratioShading(vec3 n, vec3 wo, vec3 p) {
+  ivec2 range = ivec2(0, uDiffuseCount);
+  if (uDiffuseUseRegions != 0) range = regionRange(uDiffuseRegions, uDiffuseOffsets, n);
+  vec3 unshadowedD = vec3(0.0);
+  vec3 shadowedD = vec3(0.0);
+  vec3 unshadowedS = vec3(0.0);
+  vec3 shadowedS = vec3(0.0);
+  vec3 peakS = vec3(0.0);
+  float sumY = 0.0;
+  float sumY2 = 0.0;
+  for (int k = range.x; k < range.y; ++k) {
+    int i = uDiffuseUseRegions != 0 ? int(texelFetch(uDiffuseList, k).r) : k;
+    vec4 dirSlot = texelFetch(uDiffuseLights, 2 * i);
+    float cosNL = dot(n, dirSlot.xyz);
+    if (cosNL <= 0.0) continue;
+    float v = visibility(int(dirSlot.w), p, cosNL);
+    vec4 rgbPeak = texelFetch(uDiffuseLights, 2 * i + 1);
+    vec3 wd = rgbPeak.rgb * cosNL;
+    unshadowedD += wd;
+    shadowedD += v * wd;
+    if (uSpecularByRatio != 0) {
+      vec3 full = specularBrdf(n, wo, dirSlot.xyz) * wd;
+      peakS += (v * rgbPeak.w) * full;
+      vec3 ws = (1.0 - rgbPeak.w) * full;
+      unshadowedS += ws;
+      shadowedS += v * ws;
+      float y = dot(kLuminance, ws);
+      sumY += y;
+      sumY2 += y * y;
+    }
+  }
+  vec3 ratioD = ratioOf(shadowedD, unshadowedD);
+  vec3 radiance = vec3(0.0);
+  if (uHasIrradiance != 0) radiance = diffuseBrdf() * textureLod(uIrradiance, n, 0.0).rgb * ratioD;
+  if (uSpecularByRatio != 0) {
+    float effective = sumY2 > 0.0 ? sumY * sumY / sumY2 : 0.0;
+    float t = clamp(effective / uMinEffectiveLights, 0.0, 1.0);
+    vec3 ratioS = mix(ratioD, ratioOf(shadowedS, unshadowedS), t);
+    vec3 r = reflectedDirection(n, wo);
+    radiance += textureLod(uPrefiltered, r, 0.0).rgb * directionalAlbedo(dot(n, wo)) * ratioS +
+                peakS;
+  }
+  return radiance;
+}
+
 void main() {
   vec3 wo = normalize(uEye - vPositionWorld);
   vec3 n = normalize(vNormalWorld);
   if (dot(n, wo) < 0.0) n = -n;  // two-sided surfaces
-  vec3 radiance = diffuseLighting(n, wo, vPositionWorld);
-  if (uGlossyPass != 0) radiance += glossyLighting(n, wo, vPositionWorld);
+  vec3 radiance;
+  if (uRatio != 0) {
+    radiance = ratioShading(n, wo, vPositionWorld);
+  } else {
+    radiance = diffuseLighting(n, wo, vPositionWorld);
+    if (uGlossyPass != 0) radiance += glossyLighting(n, wo, vPositionWorld);
+  }
   if (uMirror != 0 && uHasEnvironment != 0) {
     vec3 r = reflectedDirection(n, wo);
     radiance += mirrorReflectance(n, wo) * textureLod(uEnvironment, r, 0.0).rgb;

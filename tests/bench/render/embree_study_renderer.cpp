@@ -18,13 +18,16 @@ class EmbreeStudyRenderer final : public StudyRenderer {
         size_(size),
         frames_(std::max(frames, 1)) {}
 
-  std::expected<TimedFrame, std::string> render(const StudyConfig& /*config*/, const StudyMap& map,
-                                                const render::ShadingLights& lights) override {
+  std::expected<TimedFrame, std::string> render(
+      const StudyConfig& /*config*/, const StudyMap& map, const render::ShadingLights& lights,
+      const render::EnvironmentLighting* environment) override {
     TimedFrame out;
+    embree::LightRenderOptions options;
+    options.environment = environment;
     for (int frame = 0; frame < frames_; ++frame) {
       const auto start = std::chrono::steady_clock::now();
       out.image = embree::renderWithLights(embreeScene_, scene_.camera, size_.widthPx,
-                                           size_.heightPx, lights, geometry_, &map.cube);
+                                           size_.heightPx, lights, geometry_, &map.cube, options);
       out.framesMs.push_back(
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
               .count());

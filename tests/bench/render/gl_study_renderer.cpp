@@ -39,18 +39,22 @@ class GlStudyRendererImpl final : public StudyRenderer {
         size_(size),
         frames_(std::max(frames, 1)) {}
 
-  std::expected<TimedFrame, std::string> render(const StudyConfig& config, const StudyMap& map,
-                                                const render::ShadingLights& lights) override {
+  std::expected<TimedFrame, std::string> render(
+      const StudyConfig& config, const StudyMap& map, const render::ShadingLights& lights,
+      const render::EnvironmentLighting* environment) override {
     if (auto ready = prepare(config); !ready) return std::unexpected(ready.error());
     render::ShadingLights rekeyed = lights;
     rekeyed.lightsKey = ~lights.lightsKey;
     const std::uint64_t cubeVersion = std::hash<std::string>{}(map.name);
-    (void)renderer_->render(scene_.camera, rekeyed, &map.cube, cubeVersion);  // warm-up
+    // The environment is built once per map (its upload is not part of the timed frames).
+    const gl::RatioShading ratio{environment, cubeVersion};
+    (void)renderer_->render(scene_.camera, rekeyed, &map.cube, cubeVersion, ratio);  // warm-up
     TimedFrame out;
     for (int frame = 0; frame < frames_; ++frame) {
       const render::ShadingLights& now = frame % 2 == 0 ? lights : rekeyed;
       const auto start = std::chrono::steady_clock::now();
-      const gl::GlFrameStats stats = renderer_->render(scene_.camera, now, &map.cube, cubeVersion);
+      const gl::GlFrameStats stats =
+          renderer_->render(scene_.camera, now, &map.cube, cubeVersion, ratio);
       out.framesMs.push_back(msSince(start));
       out.shadowFramesMs.push_back(stats.shadowPassMs);
       if (stats.shadowMapsReused != 0 || stats.shadowMapsRendered != lights.shadowCasters.size()) {

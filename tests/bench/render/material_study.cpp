@@ -103,11 +103,15 @@ struct Row {
   std::string material;
   std::string map;
   std::size_t lights = 0;
+  std::string renderer;
   std::string shading;
   double error = 0.0;
   double frameMs = 0.0;
   double referenceSeconds = 0.0;
 };
+
+// OpenGL's shadow maps: one per light up to this many (the main study's largest atlas).
+constexpr std::size_t kGlShadowMaps = 256;
 
 std::string percent(double x) { return fmt::format("{:.2f} %", 100.0 * x); }
 
@@ -142,6 +146,7 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
     maps.push_back(std::move(*map));
   }
   std::vector<Row> rows;
+  std::string glLabel;
   std::string curves;
   std::string prefilter;
   for (const StudyMaterial& material : studyMaterials()) {
@@ -159,6 +164,15 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
     if (!scene) return std::unexpected(scene.error());
     auto embreeScene = embree::EmbreeScene::build(scene->scene);
     if (!embreeScene) return std::unexpected(embreeScene.error());
+    const std::unique_ptr<StudyRenderer> embreeRenderer =
+        makeEmbreeStudyRenderer(*embreeScene, *scene, geometry, options.size, 1);
+    GlStudyRenderer glRenderer;
+    if (options.gl) {
+      auto made = makeGlStudyRenderer(*scene, geometry, options.size, options.glFrames);
+      if (!made) return std::unexpected(made.error());
+      glRenderer = std::move(*made);
+      glLabel = glRenderer.timingLabel;
+    }
     for (const StudyMap& map : maps) {
       embree::ReferenceOptions referenceOptions;
       referenceOptions.targetRelativeError = options.referenceError;
@@ -179,29 +193,34 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
       prefilter += fmt::format("| {} | {} | {:.1f} |\n", material.name, map.name,
                                secondsSince(prefilterStart) * 1e3);
       for (const std::size_t n : options.counts) {
-        std::vector<render::LinearImage> images;
-        for (const bool byRatio : {false, true}) {
-          render::LightingOptions lighting;
-          lighting.lightCount = n;
-          lighting.shadowedCount = 0;  // Embree traces a ray per light
-          lighting.glossyPass = !byRatio && scene::anyGlossy(scene->scene);
-          lighting.clusterLayout = map.map.layout;
-          const render::ShadingLights lights =
-              render::buildShadingLights(map.lights, geometry, lighting);
-          embree::LightRenderOptions renderOptions;
-          renderOptions.environment = byRatio ? &environment : nullptr;
-          const auto start = std::chrono::steady_clock::now();
-          const render::LinearImage image = embree::renderWithLights(
-              *embreeScene, scene->camera, options.size.widthPx, options.size.heightPx, lights,
-              geometry, &map.cube, renderOptions);
-          Row row{material.name, map.name, n, byRatio ? "ratio" : "lights"};
-          row.frameMs = secondsSince(start) * 1e3;
-          row.error = render::compareImages(image, reference->image).relativeRms;
-          row.referenceSeconds = curve.secondsToReach(row.error);
-          fmt::print(stderr, "{} / {} / N {} / {}: {} in {:.0f} ms\n", material.name, map.name, n,
-                     row.shading, percent(row.error), row.frameMs);
-          rows.push_back(row);
-          images.push_back(image);
+        std::vector<render::LinearImage> images;  // Embree's, by the lights then by ratio
+        for (const RendererKind kind : {RendererKind::Embree, RendererKind::Gl}) {
+          StudyRenderer* renderer = kind == RendererKind::Embree ? embreeRenderer.get()
+                                                                 : glRenderer.renderer.get();
+          if (renderer == nullptr) continue;
+          for (const bool byRatio : {false, true}) {
+            StudyConfig config;
+            config.renderer = kind;
+            config.lighting.lightCount = n;
+            // Embree traces a ray per light; OpenGL draws a map per light up to kGlShadowMaps.
+            config.lighting.shadowedCount =
+                kind == RendererKind::Embree ? 0 : std::min(n, kGlShadowMaps);
+            config.lighting.glossyPass = !byRatio && scene::anyGlossy(scene->scene);
+            config.lighting.clusterLayout = map.map.layout;
+            const render::ShadingLights lights =
+                render::buildShadingLights(map.lights, geometry, config.lighting);
+            auto frame = renderer->render(config, map, lights, byRatio ? &environment : nullptr);
+            if (!frame) return std::unexpected(frame.error());
+            Row row{material.name, map.name, n, rendererLabel(kind),
+                    byRatio ? "ratio" : "lights"};
+            row.frameMs = frame->medianMs;
+            row.error = render::compareImages(frame->image, reference->image).relativeRms;
+            row.referenceSeconds = curve.secondsToReach(row.error);
+            fmt::print(stderr, "{} / {} / N {} / {} / {}: {} in {:.0f} ms\n", material.name,
+                       map.name, n, row.renderer, row.shading, percent(row.error), row.frameMs);
+            rows.push_back(row);
+            if (kind == RendererKind::Embree) images.push_back(std::move(frame->image));
+          }
         }
         if (!options.dumpDir.empty()) {
           std::filesystem::create_directories(options.dumpDir);
@@ -212,16 +231,20 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
     }
   }
   std::string out = fmt::format(
-      "Generated by `{}` in {:.0f} s. Embree, 2 threads, {} x {} pixels, one frame per point "
-      "(times drift by tens of per cent on this shared machine).\n\n",
-      options.command, secondsSince(started), options.size.widthPx, options.size.heightPx);
+      "Generated by `{}` in {:.0f} s, {} x {} pixels. Embree: 2 threads, a ray per light, one "
+      "frame per point. OpenGL{}: min(N, {}) shadow maps of 256 px, every timed frame redraws "
+      "them, the median of {} frames. Times drift by tens of per cent on this shared machine.\n\n",
+      options.command, secondsSince(started), options.size.widthPx, options.size.heightPx,
+      options.gl ? fmt::format(" ({})", glLabel) : " (not run: --no-gl)", kGlShadowMaps,
+      options.glFrames);
   out +=
-      "| material | map | N | shading | error (relative RMS) | frame ms | reference's time to "
-      "that error, s | x faster than the reference |\n|---|---|---:|---|---:|---:|---:|---:|\n";
+      "| material | map | N | renderer | shading | error (relative RMS) | frame ms | reference's "
+      "time to that error, s | x faster than the reference |\n"
+      "|---|---|---:|---|---|---:|---:|---:|---:|\n";
   for (const Row& r : rows) {
-    out += fmt::format("| {} | {} | {} | {} | {} | {:.0f} | {:.2f} | {:.1f} |\n", r.material, r.map,
-                       r.lights, r.shading, percent(r.error), r.frameMs, r.referenceSeconds,
-                       r.referenceSeconds / (r.frameMs * 1e-3));
+    out += fmt::format("| {} | {} | {} | {} | {} | {} | {:.0f} | {:.2f} | {:.1f} |\n", r.material,
+                       r.map, r.lights, r.renderer, r.shading, percent(r.error), r.frameMs,
+                       r.referenceSeconds, r.referenceSeconds / (r.frameMs * 1e-3));
   }
   out +=
       "\nThe references and their own curves (error against the converged reference at 4 and 16 "

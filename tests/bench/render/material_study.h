@@ -1,10 +1,10 @@
 // The material study of issue 20 (`vem_render_bench --materials`): a sphere on a plane (the
 // built-in "spheres" scene, its sphere given one material at a time: diffuse, GGX alpha 0.1, 0.3
 // and 0.6, Phong 10 and 100, a mirror), and the default scene as it is (the bunny, a gold GGX
-// sphere, a Blinn box, with vemview's starting camera), under real HDRIs, drawn by the Embree renderer with the
-// paper's sums over the lights (glossy L/H) and by ratio (the prefiltered environment shadowed by
-// the lights' ratio, light_renderer.h), at N = 16 ... 1024, each against the Monte Carlo reference
-// (cached like the main study's).
+// sphere, a Blinn box, with vemview's starting camera), under real HDRIs, drawn by the Embree and
+// the OpenGL renderers with the paper's sums over the lights (glossy L/H) and by ratio (the
+// prefiltered environment shadowed by the lights' ratio, light_renderer.h), at N = 16 ... 1024,
+// each against the Monte Carlo reference (cached like the main study's).
 //
 // Equal time: the reference's own error against its samples per pixel is measured (renders at 4,
 // 16 and 64 samples with another seed, timed, against the converged reference); Monte Carlo error
@@ -28,6 +28,8 @@ struct MaterialStudyOptions {
   int referenceMaxSamples = 8192;
   std::string cacheDir;
   std::vector<std::size_t> counts{16, 64, 256, 1024};
+  bool gl = true;     // also the OpenGL renderer (headless)
+  int glFrames = 3;   // timed OpenGL frames per point (the median is reported)
   std::vector<std::string> materials;  // names of materialStudyMaterials(); empty: all
   std::string command;                 // for the report
   // When set: per material, map and N, a PNG of the reference, the lights' and the ratio's render

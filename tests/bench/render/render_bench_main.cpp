@@ -46,6 +46,7 @@ struct BenchOptions {
   bool listMaps = false;
   bool materials = false;  // the material study (material_study.h) instead of the sweeps
   std::vector<std::string> materialNames;
+  std::vector<std::size_t> counts;  // --materials: the light counts N (empty: the study's)
   std::string dumpDir;
   std::string sweeps = "abcde";
   std::string table;
@@ -96,6 +97,8 @@ int parse(int argc, char** argv, BenchOptions& o) {
                "shading by the lights and by ratio) instead of the sweeps; writes --table");
   app.add_option("--dump", o.dumpDir, "with --materials: side-by-side PNGs into this folder");
   app.add_option("--material", o.materialNames, "with --materials: only these materials")
+      ->delimiter(',');
+  app.add_option("--counts", o.counts, "with --materials: the light counts N, e.g. 16,256")
       ->delimiter(',');
   app.add_flag("--list-maps", o.listMaps, "print how concentrated each HDRI's light is, and exit");
   app.add_option("--sweeps", o.sweeps, "the sweeps to run, e.g. ad (study_sweeps.h)");
@@ -246,6 +249,9 @@ int main(int argc, char** argv) {
     study.cacheDir = options.cacheDir;
     study.materials = options.materialNames;
     study.dumpDir = options.dumpDir;
+    study.gl = !options.noGl;
+    study.glFrames = options.glFrames;
+    if (!options.counts.empty()) study.counts = options.counts;
     study.command = commandLine(argc, argv);
     auto report = runMaterialStudy(study);
     if (!report) return fail(report.error());

@@ -16,6 +16,7 @@
 #include "bench/render/study_setup.h"
 #include "bench/render/study_sweeps.h"
 #include "client/embree/embree_scene.h"
+#include "client/render/environment_lighting.h"
 #include "client/render/linear_image.h"
 #include "client/render/shading_lights.h"
 
@@ -33,8 +34,11 @@ class StudyRenderer {
  public:
   virtual ~StudyRenderer() = default;
   // The error when the renderer cannot draw the configuration (e.g. no memory for the maps).
+  // environment: shading by ratio from it (built from map.cube for the scene's materials), or
+  // nullptr: by the lights.
   [[nodiscard]] virtual std::expected<TimedFrame, std::string> render(
-      const StudyConfig& config, const StudyMap& map, const render::ShadingLights& lights) = 0;
+      const StudyConfig& config, const StudyMap& map, const render::ShadingLights& lights,
+      const render::EnvironmentLighting* environment) = 0;
 };
 
 [[nodiscard]] double medianOf(std::vector<double> values);

@@ -15,7 +15,7 @@ std::expected<PointResult, std::string> measure(const StudyConfig& config, const
                                                 const StudyReference& reference,
                                                 StudyRenderer& renderer) {
   const render::ShadingLights lights = studyLights(map, scene, geometry, config.lighting);
-  const auto frame = renderer.render(config, map, lights);
+  const auto frame = renderer.render(config, map, lights, nullptr);
   if (!frame)
     return std::unexpected(fmt::format("{} on {}: {}", config.key(), map.name, frame.error()));
   const render::ImageError error = render::compareImages(frame->image, reference.image);

@@ -1,0 +1,50 @@
+#include "client/gl/environment_lighting_textures.h"
+
+#include <span>
+
+namespace vem::gl {
+
+void EnvironmentLightingTextures::update(const render::EnvironmentLighting* lighting,
+                                         std::uint64_t version) {
+  if (lighting == nullptr) {
+    lighting_ = nullptr;
+    version_.reset();
+    return;
+  }
+  if (lighting == lighting_ && version_ == version) return;
+  lighting_ = lighting;
+  version_ = version;
+  irradiance_.update(lighting->irradiance.levels.empty() ? nullptr : &lighting->irradiance,
+                     version);
+  specular_.resize(lighting->specular.size());
+  for (std::size_t m = 0; m < lighting->specular.size(); ++m) {
+    if (!lighting->specular[m]) {
+      specular_[m].reset();
+      continue;
+    }
+    if (!specular_[m]) specular_[m].emplace();
+    specular_[m]->update(&lighting->specular[m]->prefiltered, version);
+  }
+}
+
+void EnvironmentLightingTextures::bindMaterial(const GlProgram& program,
+                                               std::size_t materialIndex, GLenum irradianceUnit,
+                                               GLenum specularUnit) const {
+  irradiance_.bind(irradianceUnit);
+  program.set("uIrradiance", int(irradianceUnit));
+  program.set("uHasIrradiance", irradiance_.present() ? 1 : 0);
+  const bool specular = lighting_ != nullptr && materialIndex < specular_.size() &&
+                        specular_[materialIndex].has_value();
+  program.set("uSpecularByRatio", specular ? 1 : 0);
+  program.set("uPrefiltered", int(specularUnit));
+  if (!specular) {
+    EnvironmentCube::unbind(specularUnit);
+    return;
+  }
+  specular_[materialIndex]->bind(specularUnit);
+  const render::DirectionalAlbedo& albedo = lighting_->specular[materialIndex]->albedo;
+  program.set("uAlbedoScale", std::span<const float>(albedo.scale));
+  program.set("uAlbedoBias", std::span<const float>(albedo.bias));
+}
+
+}  // namespace vem::gl

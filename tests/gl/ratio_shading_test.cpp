@@ -1,0 +1,192 @@
+// Shading by ratio on the OpenGL renderer (gl_renderer.h's RatioShading, issue 20), against the
+// CPU model of render/environment_lighting.h and client/embree/light_renderer.h:
+// - an unshadowed glossy sphere under a sky with a sun takes the irradiance cube, the prefiltered
+//   cube times the albedo table, and the clipped sun light by light (catches a wrong cube, face
+//   order, albedo lookup or a missing peak term);
+// - a plane point in one light's shadow takes the shadowed share of its irradiance (catches a
+//   ratio taken from the wrong sums or the visibility left out), a point in no shadow the whole;
+// - a black map renders black, without NaN, although no light faces anything (ratio 0 / 0).
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include "client/render/environment_lighting.h"
+#include "client/render/shading_model.h"
+#include "core/cube_map.h"
+#include "core/default_pattern.h"
+#include "core/env_map.h"
+#include "core/light_generator.h"
+#include "core/sampling_tables.h"
+#include "gl_test_support.h"
+
+namespace vem::gl::test {
+namespace {
+
+constexpr int kW = 96;
+constexpr int kH = 72;
+
+scene::Material ggx(float roughness, glm::vec3 f0, float diffuse) {
+  scene::Material m;
+  m.lobe = scene::Lobe::Ggx;
+  m.roughness = roughness;
+  m.specularAlbedo = f0;
+  m.diffuseAlbedo = glm::vec3(diffuse);
+  return m;
+}
+
+// A sky brightening toward the zenith, with a sun of 2000 times it (beyond the clip at 20 times
+// the mean, so part of its light is left to the lights).
+EnvMap skyWithSun(float sunScale) {
+  EnvMap map = EnvMap::filled(MapLayout::Sphere, 128, 64, glm::vec3(0.0F));
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.8, 0.5));
+  for (int y = 0; y < map.height; ++y) {
+    for (int x = 0; x < map.width; ++x) {
+      const glm::dvec3 d = pixelCentreDirection(map, x, y);
+      const double sky = d.y > 0 ? 0.3 + 0.7 * d.y : 0.1;
+      const double s = glm::dot(d, sun) > 0.9995 ? 2000.0 * sky : sky;
+      map.set(x, y, sunScale * glm::vec3(glm::dvec3(s, 0.9 * s, 0.8 * s)));
+    }
+  }
+  return map;
+}
+
+std::vector<Light> lightsFrom(const EnvMap& map, std::size_t n) {
+  return generateLights(buildSamplingTables(map), defaultSamplingPattern(map.layout).first(n),
+                        SamplerKind::Havran)
+      .lights;
+}
+
+bool coveredAt(const render::LinearImage& image, int x, int y) {
+  return image.covered[std::size_t(y) * std::size_t(image.widthPx) + std::size_t(x)] != 0;
+}
+
+struct RatioFrame {
+  render::LinearImage image;
+  bool finite = true;
+};
+
+RatioFrame renderByRatio(const scene::Scene& s, const scene::OrbitCamera& camera,
+                         const CubeMap& cube, const render::EnvironmentLighting& environment,
+                         const render::ShadingLights& lights) {
+  auto renderer = makeRenderer(s, kW, kH);
+  if (renderer == nullptr) return {};
+  renderer->render(camera, lights, &cube, 1, RatioShading{&environment, 1});
+  RatioFrame out{renderer->readLinear()};
+  for (const float v : out.image.rgb) out.finite = out.finite && std::isfinite(v);
+  return out;
+}
+
+TEST(GlRatioShading, UnshadowedGlossySphereMatchesTheCpuEnvironmentLighting) {
+  const scene::Material m = ggx(0.5F, glm::vec3(0.9F), 0.3F);
+  const scene::Scene s = sphereScene(m, glm::vec3(0.0F), 1.0F);
+  const EnvMap map = skyWithSun(1.0F);
+  const CubeMap cube = cubeMapFromEnvMap(map, 64, 7);
+  const render::EnvironmentLighting environment = render::makeEnvironmentLighting(cube, s.materials);
+  const std::vector<Light> lights = lightsFrom(map, 64);
+  const std::vector<float> peaks = render::peakFractionsOf(environment, cube, lights);
+  ASSERT_GT(*std::max_element(peaks.begin(), peaks.end()), 0.5F);  // the sun is clipped
+  const scene::OrbitCamera camera = scene::framingCamera(scene::sceneBounds(s), 0.6F, 0.3F);
+  const RatioFrame frame = renderByRatio(s, camera, cube, environment, plainLights(lights));
+  ASSERT_TRUE(frame.finite);
+  double errorSq = 0.0;
+  double referenceSq = 0.0;
+  double peakShare = 0.0;
+  int pixels = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const auto hit = hitSphere(camera, x, y, kW, kH, glm::vec3(0.0F), 1.0F);
+      if (!hit || hit->cosView < 0.3F || !coveredAt(frame.image, x, y)) continue;
+      glm::vec3 peak(0.0F);
+      for (std::size_t i = 0; i < lights.size(); ++i) {
+        const float c = glm::dot(hit->normal, lights[i].dir);
+        if (c <= 0.0F) continue;
+        peak += render::specularBrdf(m, hit->normal, hit->toEye, lights[i].dir) * lights[i].rgb *
+                (c * peaks[i]);
+      }
+      const glm::vec3 expected = render::unshadowedDiffuse(environment, m, hit->normal) +
+                                 render::unshadowedSpecular(environment, 0, m, hit->normal,
+                                                            hit->toEye) +
+                                 peak;
+      const double e = double(frame.image.at(x, y).g - expected.g);
+      errorSq += e * e;
+      referenceSq += double(expected.g) * double(expected.g);
+      peakShare += double(peak.g) / double(expected.g);
+      ++pixels;
+    }
+  }
+  ASSERT_GT(pixels, 500);
+  EXPECT_GT(peakShare / pixels, 0.01);  // the peak term is part of what is compared
+  EXPECT_LT(std::sqrt(errorSq / referenceSq), 0.03);
+}
+
+TEST(GlRatioShading, PlaneInOneLightsShadowTakesTheShadowedShareOfItsIrradiance) {
+  const scene::Scene s = sphereOverPlane();
+  const EnvMap map = skyWithSun(1.0F);
+  const CubeMap cube = cubeMapFromEnvMap(map, 64, 7);
+  const render::EnvironmentLighting environment = render::makeEnvironmentLighting(cube, s.materials);
+  // Four grey lights; the first, at 45 degrees, casts the sphere's shadow centred on (-1, 0, 0).
+  std::vector<Light> lights(4);
+  lights[0].dir = glm::normalize(glm::vec3(1.0F, 1.0F, 0.0F));
+  lights[1].dir = glm::vec3(0.0F, 1.0F, 0.0F);
+  lights[2].dir = glm::normalize(glm::vec3(-1.0F, 1.0F, 0.0F));
+  lights[3].dir = glm::normalize(glm::vec3(0.0F, 1.0F, 1.0F));
+  for (std::size_t i = 0; i < lights.size(); ++i) lights[i].rgb = glm::vec3(1.0F + float(i));
+  lights[0].rgb = glm::vec3(6.0F);
+  const render::ShadingLights shading = withAllCasting(plainLights(lights), 7);
+  scene::OrbitCamera camera;
+  camera.targetWorld = {0.0F, 0.0F, 0.0F};
+  camera.distance = 7.0F;
+  camera.azimuthRad = 3.14159265F;
+  camera.elevationRad = 1.1F;
+  camera.verticalFovRad = 0.8F;
+  const RatioFrame frame = renderByRatio(s, camera, cube, environment, shading);
+  ASSERT_TRUE(frame.finite);
+  const glm::vec3 up(0.0F, 1.0F, 0.0F);
+  const glm::vec3 irradianceLit = render::unshadowedDiffuse(environment, s.materials[0], up);
+  float all = 0.0F;
+  for (const Light& l : lights) all += l.rgb.g * l.dir.y;
+  const float shadowedShare = (all - lights[0].rgb.g * lights[0].dir.y) / all;
+  for (const auto& [point, share] : {std::pair{glm::vec3(-1.0F, 0.0F, 0.0F), shadowedShare},
+                                     std::pair{glm::vec3(2.0F, 0.0F, -2.0F), 1.0F}}) {
+    const glm::vec2 px = projectToPixel(camera, point, kW, kH);
+    const int x = int(px.x);
+    const int y = int(px.y);
+    ASSERT_TRUE(x >= 0 && x < kW && y >= 0 && y < kH) << px.x << "," << px.y;
+    ASSERT_FALSE(hitSphere(camera, x, y, kW, kH, glm::vec3(0.0F, 1.0F, 0.0F), 0.5F));
+    EXPECT_NEAR(frame.image.at(x, y).g, irradianceLit.g * share, 0.02F * irradianceLit.g)
+        << point.x << "," << point.z;
+  }
+  ASSERT_LT(shadowedShare, 0.85F);  // the shadow is deep enough to tell apart
+}
+
+TEST(GlRatioShading, BlackMapRendersBlackWithoutNan) {
+  const scene::Material m = ggx(0.3F, glm::vec3(0.9F), 0.2F);
+  scene::Scene s = sphereOverPlane();
+  s.materials.push_back(m);
+  s.meshes[0].material = 1;
+  const EnvMap map = skyWithSun(0.0F);
+  const CubeMap cube = cubeMapFromEnvMap(map, 64, 7);
+  const render::EnvironmentLighting environment = render::makeEnvironmentLighting(cube, s.materials);
+  std::vector<Light> lights = lightsFrom(skyWithSun(1.0F), 16);
+  for (Light& l : lights) l.rgb = glm::vec3(0.0F);
+  const scene::OrbitCamera camera = scene::framingCamera(scene::sceneBounds(s), 0.6F, 0.4F);
+  const RatioFrame frame =
+      renderByRatio(s, camera, cube, environment, withAllCasting(plainLights(lights), 3));
+  ASSERT_TRUE(frame.finite);
+  int covered = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      if (!coveredAt(frame.image, x, y)) continue;
+      ++covered;
+      EXPECT_EQ(frame.image.at(x, y), glm::vec3(0.0F)) << x << "," << y;
+    }
+  }
+  EXPECT_GT(covered, 500);
+}
+
+}  // namespace
+}  // namespace vem::gl::test
