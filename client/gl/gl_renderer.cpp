@@ -19,10 +19,10 @@ namespace vem::gl {
 namespace {
 
 constexpr GLenum kShadowUnit = kFirstLightUnit + kLightUnitCount;  // 12
-constexpr GLenum kEnvironmentUnit = kShadowUnit + 1;                // 13
-constexpr GLenum kCasterUnit = kEnvironmentUnit + 1;                // 14
-constexpr GLenum kIrradianceUnit = kCasterUnit + 1;                 // 15
-constexpr GLenum kPrefilteredUnit = kIrradianceUnit + 1;            // 16
+constexpr GLenum kEnvironmentUnit = kShadowUnit + 1;               // 13
+constexpr GLenum kCasterUnit = kEnvironmentUnit + 1;               // 14
+constexpr GLenum kIrradianceUnit = kCasterUnit + 1;                // 15
+constexpr GLenum kPrefilteredUnit = kIrradianceUnit + 1;           // 16
 constexpr GLint kFragmentUnitsNeeded = GLint(kPrefilteredUnit) + 1;
 
 double msSince(std::chrono::steady_clock::time_point start) {
@@ -64,7 +64,7 @@ std::expected<LightingTarget, std::string> makeLightingTarget(int widthPx, int h
 
 struct GlRenderer::Impl {
   GlRendererOptions options;
-  scene::Bounds bounds;
+  scene::Bounds bounds;  // the shadow casters' (scene::shadowCasterBounds): the maps' view
   std::vector<scene::Material> materials;
   std::vector<GlMesh> meshes;
   GlProgram lighting;
@@ -103,8 +103,8 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
   auto background =
       GlProgram::build("background", {"fullscreen.vert.glsl"}, {"background.frag.glsl"});
   if (!background) return std::unexpected(background.error());
-  auto depth = GlProgram::build("shadow depth", {"shadow_depth.vert.glsl"},
-                                {"shadow_depth.frag.glsl"});
+  auto depth =
+      GlProgram::build("shadow depth", {"shadow_depth.vert.glsl"}, {"shadow_depth.frag.glsl"});
   if (!depth) return std::unexpected(depth.error());
   auto atlas = ShadowAtlas::create(options.shadowMapPx, options.maxShadowMaps);
   if (!atlas) return std::unexpected(atlas.error());
@@ -124,11 +124,24 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
   const render::LightingGeometry& geometry =
       options.geometry == nullptr ? ownGeometry : *options.geometry;
 
-  auto impl = std::unique_ptr<Impl>(new Impl{
-      options, scene::sceneBounds(scene), scene.materials, {}, std::move(*lighting),
-      std::move(*background), std::move(*depth), LightTextures(geometry), std::move(*atlas),
-      EnvironmentCube(), EnvironmentLightingTextures(), std::move(*toneMap), std::move(*target), GlVertexArray::create(),
-      std::nullopt, TextureBuffer(GL_RGBA32F), 0, std::nullopt});
+  auto impl = std::unique_ptr<Impl>(new Impl{options,
+                                             scene::shadowCasterBounds(scene),
+                                             scene.materials,
+                                             {},
+                                             std::move(*lighting),
+                                             std::move(*background),
+                                             std::move(*depth),
+                                             LightTextures(geometry),
+                                             std::move(*atlas),
+                                             EnvironmentCube(),
+                                             EnvironmentLightingTextures(),
+                                             std::move(*toneMap),
+                                             std::move(*target),
+                                             GlVertexArray::create(),
+                                             std::nullopt,
+                                             TextureBuffer(GL_RGBA32F),
+                                             0,
+                                             std::nullopt});
   if (options.presentToWindow) {
     auto overlay = OverlayPass::create();
     if (!overlay) return std::unexpected(overlay.error());
@@ -141,7 +154,8 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
                  impl->atlas.capacity(), impl->atlas.tilePx(), options.maxShadowMaps);
   }
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
-    return std::unexpected("OpenGL error " + std::to_string(error) + " while creating the renderer");
+    return std::unexpected("OpenGL error " + std::to_string(error) +
+                           " while creating the renderer");
   }
   return std::unique_ptr<GlRenderer>(new GlRenderer(std::move(impl)));
 }
@@ -149,9 +163,8 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
 GlRenderer::GlRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GlRenderer::~GlRenderer() = default;
 
-std::size_t GlRenderer::Impl::shadowPass(const render::ShadingLights& frame,
-                                         GlFrameStats& stats) {
-  const std::size_t count = std::min(frame.shadowCasters.size(), atlas.capacity());
+std::size_t GlRenderer::Impl::shadowPass(const render::ShadingLights& frame, GlFrameStats& stats) {
+  const std::size_t count = std::min(frame.shadowDirs.size(), atlas.capacity());
   if (count == 0) {
     shadowKey.reset();
     return 0;
@@ -160,11 +173,8 @@ std::size_t GlRenderer::Impl::shadowPass(const render::ShadingLights& frame,
     stats.shadowMapsReused = count;
     return count;
   }
-  std::vector<glm::vec3> dirs;
-  dirs.reserve(count);
-  for (std::size_t slot = 0; slot < count; ++slot) {
-    dirs.push_back(frame.diffuse.lights.at(frame.shadowCasters[slot]).dir);
-  }
+  const std::vector<glm::vec3> dirs(frame.shadowDirs.begin(),
+                                    frame.shadowDirs.begin() + std::ptrdiff_t(count));
   atlas.render(dirs, bounds, depth, meshes);
   std::vector<float> texels;
   texels.reserve(4 * dirs.size());
@@ -209,8 +219,8 @@ void GlRenderer::Impl::setMaterial(const scene::Material& material, bool glossyP
 }
 
 void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
-                                    const render::ShadingLights& frame,
-                                    std::size_t shadowMaps, const RatioShading& ratio) const {
+                                    const render::ShadingLights& frame, std::size_t shadowMaps,
+                                    const RatioShading& ratio) const {
   const float aspect = float(options.widthPx) / float(options.heightPx);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

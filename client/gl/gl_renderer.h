@@ -8,7 +8,7 @@
 // top and pixel-aligned with the Embree renderer through scene::OrbitCamera; radiance in the
 // lights' units (core/light.h). Needs a current GlContext for its whole life.
 //
-// What a frame computes follows its ShadingLights: no shadowCasters, no shadow pass; the same
+// What a frame computes follows its ShadingLights: no shadowDirs, no shadow pass; the same
 // lightsKey (and caster count) as the previous frame, the maps are reused; empty diffuseLists, every
 // diffuse light is walked; no glossy sets, glossy materials take their specular lobe from the
 // diffuse lights; mirror-like materials reflect the cube map (black without one).

@@ -1,6 +1,7 @@
 // The light's view for a shadow map (paper 004 section 5.2.1): an orthographic projection of the
-// scene's bounding sphere seen from a directional light, built from the light's direction alone
-// so the lighting shader can rebuild it (shaders/light_view.glsl mirrors this file exactly).
+// shadow casters' bounding sphere (scene::shadowCasterBounds: grounds left out) seen from a
+// directional light, built from the light's direction alone so the lighting shader can rebuild it
+// (shaders/light_view.glsl mirrors this file exactly).
 //
 // Conventions: dirToLight unit, world frame (core/light.h: from the scene toward the light). The
 // eye sits at centre + dirToLight r and looks at the centre, up = +Y (or +X when |dir.y| > 0.99);

@@ -19,8 +19,8 @@ std::expected<ShadowAtlas, std::string> ShadowAtlas::create(int tilePx, std::siz
 
   atlas.depth_ = GlTexture::create();
   glBindTexture(GL_TEXTURE_2D, atlas.depth_.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, side, side, 0, GL_DEPTH_COMPONENT,
-               GL_FLOAT, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, side, side, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+               nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
@@ -58,6 +58,10 @@ void ShadowAtlas::render(std::span<const glm::vec3> dirsToLight, const scene::Bo
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // two-sided casters
+  // The view spans the casters' bounding sphere (scene::shadowCasterBounds); a ground beyond its
+  // near or far plane is clamped onto it rather than clipped, so it still hides what lies behind
+  // it from a light below it.
+  glEnable(GL_DEPTH_CLAMP);
   depthProgram.use();
   for (std::size_t slot = 0; slot < count; ++slot) {
     const int column = int(slot) % grid_;
@@ -66,6 +70,7 @@ void ShadowAtlas::render(std::span<const glm::vec3> dirsToLight, const scene::Bo
     depthProgram.set("uLightClipFromWorld", lightClipFromWorld(dirsToLight[slot], bounds));
     for (const GlMesh& mesh : meshes) mesh.draw();
   }
+  glDisable(GL_DEPTH_CLAMP);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

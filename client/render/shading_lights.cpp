@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <numeric>
+#include <span>
 
 #include <glm/glm.hpp>
 
@@ -45,9 +46,9 @@ LightSet prefixOf(const LightSet& lights, std::size_t count) {
 // lights borrowed maps up to 180 degrees away).
 constexpr double kLuminanceTieRelative = 1e-4;
 
-// The S lights of largest luminance (ties in light order), by slot. Luminances are compared by
-// their distance to the largest in steps of kLuminanceTieRelative (integer keys: a strict weak
-// order), so lights within a step of each other keep their order.
+// The S lights of largest luminance (ties in light order), by slot: the shadow maps' seeds.
+// Luminances are compared by their distance to the largest in steps of kLuminanceTieRelative
+// (integer keys: a strict weak order), so lights within a step of each other keep their order.
 std::vector<std::uint32_t> shadowCastersOf(const LightSet& diffuse, std::size_t shadowedCount) {
   std::vector<std::uint32_t> order(diffuse.lights.size());
   std::iota(order.begin(), order.end(), 0U);
@@ -65,30 +66,9 @@ std::vector<std::uint32_t> shadowCastersOf(const LightSet& diffuse, std::size_t 
   return order;
 }
 
-// For each light, the slot of the caster nearest in angle (its own when it is a caster).
-std::vector<std::int32_t> nearestSlots(std::span<const Light> lights, const LightSet& diffuse,
-                                       std::span<const std::uint32_t> casters) {
-  std::vector<std::int32_t> slots(lights.size(), -1);
-  if (casters.empty()) {
-    return slots;
-  }
-  for (std::size_t i = 0; i < lights.size(); ++i) {
-    float best = -2.0F;
-    for (std::size_t slot = 0; slot < casters.size(); ++slot) {
-      const float d = glm::dot(lights[i].dir, diffuse.lights[casters[slot]].dir);
-      if (d > best) {
-        best = d;
-        slots[i] = std::int32_t(slot);
-      }
-    }
-  }
-  return slots;
-}
-
-std::uint64_t keyOf(const LightSet& diffuse, std::span<const std::uint32_t> casters) {
-  std::uint64_t key = 1469598103934665603ULL ^ casters.size();  // FNV-1a over the directions
-  for (std::uint32_t index : casters) {
-    const glm::vec3 d = diffuse.lights[index].dir;
+std::uint64_t keyOf(std::span<const glm::vec3> dirs) {
+  std::uint64_t key = 1469598103934665603ULL ^ dirs.size();  // FNV-1a over the directions
+  for (const glm::vec3& d : dirs) {
     for (float c : {d.x, d.y, d.z}) {
       key = (key ^ std::bit_cast<std::uint32_t>(c)) * 1099511628211ULL;
     }
@@ -121,13 +101,16 @@ ShadingLights buildShadingLights(const LightSet& lights, const LightingGeometry&
     const std::size_t high = std::clamp<std::size_t>(options.highCount, 1, prefix.lights.size());
     out.glossy = makeGlossyLightSets(prefix, high, geometry.glossyRegions);
   }
-  out.shadowCasters = shadowCastersOf(out.diffuse, options.shadowedCount);
-  out.shadowSlotOfDiffuse = nearestSlots(out.diffuse.lights, out.diffuse, out.shadowCasters);
+  ShadowGroups groups =
+      groupShadows(out.diffuse.lights, shadowCastersOf(out.diffuse, options.shadowedCount),
+                   options.shadowGrouping);
+  out.shadowDirs = std::move(groups.dirs);
+  out.shadowSlotOfDiffuse = std::move(groups.slots);
   if (out.glossy) {
-    out.shadowSlotOfLow = nearestSlots(out.glossy->low.lights, out.diffuse, out.shadowCasters);
+    out.shadowSlotOfLow = nearestShadowSlots(out.glossy->low.lights, out.shadowDirs);
   }
   out.maxConeLights = std::max<std::size_t>(options.maxConeLights, 1);
-  out.lightsKey = keyOf(out.diffuse, out.shadowCasters);
+  out.lightsKey = keyOf(out.shadowDirs);
   return out;
 }
 

@@ -13,12 +13,15 @@
 // - glossy (only when the plan has a glossy pass): L = the first lightCount lights unclustered,
 //   H = its first highCount lights rescaled, and their region lists (section 4.2,
 //   core/glossy_light_sets.h). The specular term of glossy surfaces walks these.
-// - Shadows (section 5.2.1): shadowCasters lists the diffuse lights that get a shadow map, the
-//   shadowedCount most important (largest luminance; luminances within 1e-4 of each other, relative,
-//   are ties, kept in light order, so without clustering the first ones whatever their colour), in
-//   slot order. Every other diffuse light, and every L light, takes the map of the
-//   caster nearest to it in angle (the paper's "most relevant shadow map"): shadowSlotOfDiffuse and
-//   shadowSlotOfLow give that slot, or -1 when there are no shadow maps (unshadowed).
+// - Shadows (section 5.2.1): the shadowedCount most important diffuse lights (largest luminance;
+//   luminances within 1e-4 of each other, relative, are ties, kept in light order, so without
+//   clustering the first ones whatever their colour) seed the shadow maps, one per slot. With
+//   fewer maps than lights, the lights share them by shadow group (shadow_groups.h): by default
+//   each map is rendered from the luminance-weighted mean direction of its group of lights
+//   (ShadowGrouping::Cluster); NearestCaster keeps the paper's scheme, each map at its seed and
+//   every other light reading the nearest seed's. shadowDirs gives each slot's direction;
+//   shadowSlotOfDiffuse and shadowSlotOfLow give each light's slot (for an L light: the slot
+//   whose direction is nearest), or -1 when there are no shadow maps (unshadowed).
 // - lightsKey identifies the light directions that the shadow maps depend on: equal keys mean the
 //   maps can be reused.
 // Directions in the world frame of core/env_map.h; rgb in the irradiance units of core/light.h.
@@ -29,6 +32,7 @@
 #include <optional>
 #include <vector>
 
+#include "client/render/shadow_groups.h"
 #include "core/angular_regions.h"
 #include "core/env_map.h"
 #include "core/glossy_light_sets.h"
@@ -47,6 +51,7 @@ struct LightingOptions {
   std::size_t maxConeLights = 216;  // k: L lights per cone at most
   int clusterBudget = 0;            // Q > 0: cluster the diffuse lights (about Q), 0: no clustering
   MapLayout clusterLayout = MapLayout::Hemisphere;  // the map the lights came from (sets Q's area)
+  ShadowGrouping shadowGrouping = ShadowGrouping::Cluster;  // how S < N maps are shared
 };
 
 // The fixed region geometry (built once per renderer; costs milliseconds).
@@ -60,11 +65,11 @@ struct ShadingLights {
   LightSet diffuse;
   RegionLightLists diffuseLists;
   std::optional<GlossyLightSets> glossy;
-  std::vector<std::uint32_t> shadowCasters;       // indices into diffuse.lights, by slot
+  std::vector<glm::vec3> shadowDirs;              // by slot: the direction of its map
   std::vector<std::int32_t> shadowSlotOfDiffuse;  // one per diffuse light
   std::vector<std::int32_t> shadowSlotOfLow;      // one per glossy->low light (empty without)
   std::size_t maxConeLights = 216;
-  std::uint64_t lightsKey = 0;  // hash of the casters' directions
+  std::uint64_t lightsKey = 0;  // hash of shadowDirs
 };
 
 [[nodiscard]] ShadingLights buildShadingLights(const LightSet& lights,

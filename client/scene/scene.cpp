@@ -5,6 +5,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 #include <limits>
+#include <optional>
 
 namespace vem::scene {
 namespace {
@@ -114,6 +115,62 @@ bool Material::mirrorLike() const {
 }
 
 float Bounds::radius() const { return 0.5F * glm::length(max - min); }
+
+namespace {
+
+// The plane of a flat mesh oriented by its first shading normal, or nullopt when it is not flat.
+struct Plane {
+  glm::vec3 normal;
+  glm::vec3 point;
+};
+std::optional<Plane> flatPlane(const Mesh& mesh, float tolerance) {
+  if (mesh.triangleCount() == 0 || mesh.normals.empty()) return std::nullopt;
+  std::optional<Plane> plane;
+  for (std::size_t t = 0; t < mesh.triangleCount() && !plane; ++t) {
+    const glm::vec3 a = mesh.positions[mesh.indices[3 * t]];
+    const glm::vec3 cross = glm::cross(mesh.positions[mesh.indices[3 * t + 1]] - a,
+                                       mesh.positions[mesh.indices[3 * t + 2]] - a);
+    const float length = glm::length(cross);
+    if (length > 0.0F) plane = Plane{cross / length, a};
+  }
+  if (!plane) return std::nullopt;
+  if (glm::dot(plane->normal, mesh.normals.front()) < 0.0F) plane->normal = -plane->normal;
+  for (const glm::vec3& p : mesh.positions) {
+    if (std::abs(glm::dot(p - plane->point, plane->normal)) > tolerance) return std::nullopt;
+  }
+  return plane;
+}
+
+bool isGround(const Scene& scene, std::size_t index, float tolerance) {
+  const std::optional<Plane> plane = flatPlane(scene.meshes[index], tolerance);
+  if (!plane) return false;
+  for (std::size_t other = 0; other < scene.meshes.size(); ++other) {
+    if (other == index) continue;
+    for (const glm::vec3& p : scene.meshes[other].positions) {
+      if (glm::dot(p - plane->point, plane->normal) < -tolerance) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+Bounds shadowCasterBounds(const Scene& scene) {
+  const Bounds whole = sceneBounds(scene);
+  const float tolerance = kConvexTolerance * std::max(whole.radius(), 1e-6F);
+  glm::vec3 lo(std::numeric_limits<float>::max());
+  glm::vec3 hi(std::numeric_limits<float>::lowest());
+  bool any = false;
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    if (isGround(scene, i, tolerance)) continue;
+    for (const glm::vec3& p : scene.meshes[i].positions) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+      any = true;
+    }
+  }
+  return any ? Bounds{lo, hi} : whole;
+}
 
 Bounds sceneBounds(const Scene& scene) {
   glm::vec3 lo(std::numeric_limits<float>::max());

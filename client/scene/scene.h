@@ -69,6 +69,13 @@ struct Scene {
 };
 
 [[nodiscard]] Bounds sceneBounds(const Scene& scene);
+// The bounds the shadow maps must cover: every mesh but the grounds, a ground being a flat mesh
+// (every vertex within kConvexTolerance of the scene's radius of one triangle's plane) with every
+// other mesh's vertices on its front side (its shading normal's) or on it. A ground hides no part
+// of the scene from a light on its front side, and for a light behind it, it hides the whole of
+// what lies within these bounds; outside them, in the light's view, nothing casts a shadow. The
+// whole scene's bounds when every mesh is a ground (or there are none).
+[[nodiscard]] Bounds shadowCasterBounds(const Scene& scene);
 [[nodiscard]] std::size_t triangleCount(const Scene& scene);
 [[nodiscard]] bool anyGlossy(const Scene& scene);
 [[nodiscard]] bool anyMirrorLike(const Scene& scene);

@@ -23,7 +23,7 @@ LightCounts lightCountsOf(const render::ShadingLights& shading, std::size_t clus
                           std::size_t shadowMapsPlanned) {
   const std::size_t diffuse = shading.diffuse.lights.size();
   return LightCounts{clusteredFrom > 0 ? clusteredFrom : diffuse, clusteredFrom > 0 ? diffuse : 0,
-                     shading.shadowCasters.size(), shadowMapsPlanned};
+                     shading.shadowDirs.size(), shadowMapsPlanned};
 }
 
 std::string lightCountsText(const LightCounts& counts) {

@@ -150,7 +150,7 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   const render::ToneParams tone = v.tone.current().value_or(render::ToneParams{});
   record.timing = v.last.timing;
   record.timing["lights"] = v.shading.diffuse.lights.size();
-  record.timing["shadowed"] = v.shading.shadowCasters.size();
+  record.timing["shadowed"] = v.shading.shadowDirs.size();
   record.timing["shading_lights_ms"] = shadingMs;
   record.timing["render_ms"] = decision.redraw ? v.last.renderMs : 0.0;
   v.status.add(

@@ -50,6 +50,8 @@ void stageTable(std::ostringstream& md, const ReportInputs& in) {
       {"fir", "FIR, paper's 9 taps", "1000 for 210 lights"},
       {"clustering", "clustering (Q = 72)", "about 1000 for 300 lights"},
       {"regions", "angular regions (200), light lists", "under 1000"},
+      {"shadow_groups", "vemview: 64 shadow maps shared by group (k-means)", "-"},
+      {"shadow_nearest", "vemview: 64 shadow maps, the nearest caster's (paper)", "-"},
       {"chain", "capture chain: tables, lights, FIR, clustering", "under 5000"},
       {"chain_regions", "whole chain: the capture chain plus angular regions", "-"}};
   for (const auto& [key, label, paper] : rows) {

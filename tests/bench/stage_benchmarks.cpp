@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <functional>
+#include <numeric>
 
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
 #include "bench_fixtures.h"
+#include "client/render/shadow_groups.h"
 #include "core/angular_regions.h"
 #include "core/default_pattern.h"
 #include "core/light_clustering.h"
@@ -74,6 +76,19 @@ void registerStageBenchmarks() {
     registerStage("regions", i, [p](benchmark::State& s) {
       for (auto _ : s) benchmark::DoNotOptimize(visibleLightLists(p->regions, p->lights));
     });
+    // The renderer's shadow groups (client/render/shadow_groups.h): S = 64 maps shared by the N
+    // lights, seeded by the first 64 (the equal-power lights' most important).
+    for (const auto grouping :
+         {render::ShadowGrouping::Cluster, render::ShadowGrouping::NearestCaster}) {
+      registerStage(
+          grouping == render::ShadowGrouping::Cluster ? "shadow_groups" : "shadow_nearest", i,
+          [p, grouping](benchmark::State& s) {
+            std::vector<std::uint32_t> seeds(std::min<std::size_t>(64, p->lights.lights.size()));
+            std::iota(seeds.begin(), seeds.end(), 0U);
+            for (auto _ : s)
+              benchmark::DoNotOptimize(render::groupShadows(p->lights.lights, seeds, grouping));
+          });
+    }
     // The capture chain, what vemd does per frame: tables, lights, FIR, clustering; and the same
     // plus the angular regions, which the renderer builds from each light set.
     const auto cells = std::make_shared<const LightCells>(

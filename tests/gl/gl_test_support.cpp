@@ -74,9 +74,9 @@ render::ShadingLights withRegions(render::ShadingLights lights) {
 }
 
 render::ShadingLights withAllCasting(render::ShadingLights lights, std::uint64_t key) {
-  lights.shadowCasters.clear();
+  lights.shadowDirs.clear();
   for (std::size_t i = 0; i < lights.diffuse.lights.size(); ++i) {
-    lights.shadowCasters.push_back(std::uint32_t(i));
+    lights.shadowDirs.push_back(lights.diffuse.lights[i].dir);
     lights.shadowSlotOfDiffuse[i] = std::int32_t(i);
   }
   lights.lightsKey = key;
@@ -100,8 +100,8 @@ std::vector<Light> spreadLights(int count, glm::vec3 total) {
     const double phi = golden * double(i);
     Light light;
     light.id = std::uint32_t(i);
-    light.dir = glm::normalize(glm::vec3(float(ring * std::cos(phi)), float(y),
-                                         float(ring * std::sin(phi))));
+    light.dir = glm::normalize(
+        glm::vec3(float(ring * std::cos(phi)), float(y), float(ring * std::sin(phi))));
     light.rgb = total / float(count);
     out.push_back(light);
   }
@@ -127,8 +127,7 @@ std::unique_ptr<GlRenderer> makeRenderer(const scene::Scene& scene, int widthPx,
 
 std::optional<SphereHit> hitSphere(const scene::OrbitCamera& camera, int x, int y, int widthPx,
                                    int heightPx, glm::vec3 centre, float radius) {
-  const scene::Ray ray =
-      camera.primaryRay(float(x) + 0.5F, float(y) + 0.5F, widthPx, heightPx);
+  const scene::Ray ray = camera.primaryRay(float(x) + 0.5F, float(y) + 0.5F, widthPx, heightPx);
   const glm::dvec3 o = glm::dvec3(ray.originWorld) - glm::dvec3(centre);
   const glm::dvec3 d = glm::normalize(glm::dvec3(ray.dirWorld));
   const double b = glm::dot(o, d);

@@ -54,10 +54,11 @@ TEST(ShadingLights, ShadowCastersAreTheBrightestLightsNotTheFirst) {
   LightingOptions options;
   options.lightCount = 4;
   options.shadowedCount = 2;
+  options.shadowGrouping = ShadowGrouping::NearestCaster;  // the maps sit at their seeds
   const ShadingLights s = buildShadingLights(set, geometry(), options);
-  ASSERT_EQ(s.shadowCasters.size(), 2U);
-  EXPECT_EQ(s.shadowCasters[0], 1U);
-  EXPECT_EQ(s.shadowCasters[1], 3U);
+  ASSERT_EQ(s.shadowDirs.size(), 2U);
+  EXPECT_EQ(s.shadowDirs[0], set.lights[1].dir);
+  EXPECT_EQ(s.shadowDirs[1], set.lights[3].dir);
 }
 
 // Issue 17: the generator's lights carry equal luminance shares, but a pure-blue light's float
@@ -85,22 +86,27 @@ TEST(ShadingLights, EqualPowerCastersAreTheFirstLightsWhateverTheirColourRoundsT
   LightingOptions options;
   options.lightCount = 8;
   options.shadowedCount = 4;
+  options.shadowGrouping = ShadowGrouping::NearestCaster;  // the maps sit at their seeds
   const ShadingLights s = buildShadingLights(set, geometry(), options);
-  EXPECT_EQ(s.shadowCasters, (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  ASSERT_EQ(s.shadowDirs.size(), 4U);
+  for (std::size_t slot = 0; slot < 4; ++slot) EXPECT_EQ(s.shadowDirs[slot], set.lights[slot].dir);
 }
 
 TEST(ShadingLights, UnshadowedLightTakesTheMapOfTheNearestCaster) {
   const LightSet set = lightsAlong(
       {{{1, 0.2F, 0}, 5}, {{-1, 0.2F, 0}, 5}, {{0.9F, 0.4F, 0.1F}, 1}, {{-1, 0.5F, 0}, 1}});
-  LightingOptions options;
-  options.lightCount = 4;
-  options.shadowedCount = 2;
-  const ShadingLights s = buildShadingLights(set, geometry(), options);
-  ASSERT_EQ(s.shadowSlotOfDiffuse.size(), 4U);
-  EXPECT_EQ(s.shadowSlotOfDiffuse[0], 0);  // casters own their slots
-  EXPECT_EQ(s.shadowSlotOfDiffuse[1], 1);
-  EXPECT_EQ(s.shadowSlotOfDiffuse[2], 0);  // near +X
-  EXPECT_EQ(s.shadowSlotOfDiffuse[3], 1);  // near -X
+  for (ShadowGrouping grouping : {ShadowGrouping::NearestCaster, ShadowGrouping::Cluster}) {
+    LightingOptions options;
+    options.lightCount = 4;
+    options.shadowedCount = 2;
+    options.shadowGrouping = grouping;
+    const ShadingLights s = buildShadingLights(set, geometry(), options);
+    ASSERT_EQ(s.shadowSlotOfDiffuse.size(), 4U);
+    EXPECT_EQ(s.shadowSlotOfDiffuse[0], 0);  // casters own their slots
+    EXPECT_EQ(s.shadowSlotOfDiffuse[1], 1);
+    EXPECT_EQ(s.shadowSlotOfDiffuse[2], 0);  // near +X
+    EXPECT_EQ(s.shadowSlotOfDiffuse[3], 1);  // near -X
+  }
 }
 
 TEST(ShadingLights, NoShadowMapsMeansEveryLightIsUnshadowed) {
@@ -108,7 +114,7 @@ TEST(ShadingLights, NoShadowMapsMeansEveryLightIsUnshadowed) {
   LightingOptions options;
   options.shadowedCount = 0;
   const ShadingLights s = buildShadingLights(set, geometry(), options);
-  EXPECT_TRUE(s.shadowCasters.empty());
+  EXPECT_TRUE(s.shadowDirs.empty());
   for (std::int32_t slot : s.shadowSlotOfDiffuse) {
     EXPECT_EQ(slot, -1);
   }
@@ -118,11 +124,24 @@ TEST(ShadingLights, KeyChangesWhenACasterMovesAndOnlyThen) {
   LightSet set = lightsAlong({{{0, 1, 0}, 5}, {{1, 1, 0}, 1}, {{0, 1, 1}, 1}});
   LightingOptions options;
   options.shadowedCount = 1;
+  options.shadowGrouping = ShadowGrouping::NearestCaster;  // only the seed's direction counts
   const std::uint64_t before = buildShadingLights(set, geometry(), options).lightsKey;
   EXPECT_EQ(buildShadingLights(set, geometry(), options).lightsKey, before);
   set.lights[2].dir = glm::normalize(glm::vec3(0, 1, -1));  // not a caster
   EXPECT_EQ(buildShadingLights(set, geometry(), options).lightsKey, before);
   set.lights[0].dir = glm::normalize(glm::vec3(0.1F, 1, 0));  // the caster
+  EXPECT_NE(buildShadingLights(set, geometry(), options).lightsKey, before);
+}
+
+// With shadow groups, a map is rendered from its group's mean: a light of the group that moves
+// moves the map, so the maps must be rendered again.
+TEST(ShadingLights, KeyChangesWhenAnyLightOfAGroupMoves) {
+  LightSet set = lightsAlong({{{0, 1, 0}, 5}, {{1, 1, 0}, 1}, {{0, 1, 1}, 1}});
+  LightingOptions options;
+  options.shadowedCount = 1;
+  const std::uint64_t before = buildShadingLights(set, geometry(), options).lightsKey;
+  EXPECT_EQ(buildShadingLights(set, geometry(), options).lightsKey, before);
+  set.lights[2].dir = glm::normalize(glm::vec3(0, 1, -1));
   EXPECT_NE(buildShadingLights(set, geometry(), options).lightsKey, before);
 }
 

@@ -1,6 +1,7 @@
 // The built-in scenes: the bunny from the shared data standing on the ground, materials per the
 // glossy option, the stand-in when the bunny is missing, and what each scene can shadow.
 #include "client/scene/default_scene.h"
+#include "client/scene/primitives.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -115,6 +116,41 @@ TEST(BuiltinScene, SphereOnAPlaneCanCastShadows) {
   const auto spheres = builtinScene("spheres");
   ASSERT_TRUE(spheres);
   EXPECT_TRUE(canCastShadows(*spheres));
+}
+
+// The shadow maps' view (client/gl/light_clip.h) spans what can cast a shadow: the sphere, not the
+// 4-unit ground it stands on (issue 20 part 3: the ground in the view made the sun's shadow
+// texels 2.7 times larger and blurred the contact).
+TEST(ShadowCasterBounds, LeaveOutTheGroundTheOtherMeshesStandOn) {
+  const auto spheres = builtinScene("spheres");
+  ASSERT_TRUE(spheres);
+  const Bounds casters = shadowCasterBounds(*spheres);
+  EXPECT_NEAR(casters.min.y, 0.0F, 1e-3F);
+  EXPECT_NEAR(casters.max.y, 1.0F, 1e-3F);
+  EXPECT_NEAR(casters.max.x - casters.min.x, 1.0F, 1e-2F);
+  EXPECT_NEAR(sceneBounds(*spheres).max.x - sceneBounds(*spheres).min.x, 4.0F, 1e-3F);
+}
+
+// A flat mesh with something behind it (a shelf over a box, a plane seen from below) hides that
+// from the light on its front side: it stays in the view.
+TEST(ShadowCasterBounds, KeepAFlatMeshWithSomethingBehindIt) {
+  Scene shelf;
+  shelf.materials = {Material{}};
+  shelf.meshes.push_back(groundPlane(1.0F, 2.0F));  // a shelf at y = 1, facing up
+  shelf.meshes.push_back(boxMesh(glm::vec3(-0.2F, 0.0F, -0.2F), glm::vec3(0.2F, 0.5F, 0.2F)));
+  const Bounds casters = shadowCasterBounds(shelf);
+  EXPECT_NEAR(casters.max.x - casters.min.x, 2.0F, 1e-3F);
+  EXPECT_NEAR(casters.max.y, 1.0F, 1e-3F);
+}
+
+// Only grounds (or one plane alone): the whole scene, never empty bounds.
+TEST(ShadowCasterBounds, AreTheWholeSceneWhenEveryMeshIsAGround) {
+  Scene plane;
+  plane.materials = {Material{}};
+  plane.meshes.push_back(groundPlane(0.0F, 3.0F));
+  const Bounds casters = shadowCasterBounds(plane);
+  EXPECT_NEAR(casters.max.x - casters.min.x, 3.0F, 1e-3F);
+  EXPECT_NEAR(casters.max.z - casters.min.z, 3.0F, 1e-3F);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ using namespace std::chrono_literals;
 render::ShadingLights shadingWith(std::size_t diffuse, std::size_t casters) {
   render::ShadingLights s;
   s.diffuse.lights.resize(diffuse);
-  for (std::size_t i = 0; i < casters; ++i) s.shadowCasters.push_back(std::uint32_t(i));
+  for (std::size_t i = 0; i < casters; ++i) s.shadowDirs.push_back(glm::vec3(0.0F, 1.0F, 0.0F));
   return s;
 }
 

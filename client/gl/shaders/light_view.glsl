@@ -1,5 +1,6 @@
-// Mirrors client/gl/light_clip.h: a light's orthographic view of the scene's bounding sphere
-// (centre uSceneCentre, radius uShadowRadius = shadowFrameRadius(bounds)), rebuilt from the
+// Mirrors client/gl/light_clip.h: a light's orthographic view of the shadow casters' bounding
+// sphere (centre uSceneCentre, radius uShadowRadius = shadowFrameRadius(bounds), bounds =
+// scene::shadowCasterBounds), rebuilt from the
 // light's direction alone (paper 004 section 5.2.1: gluLookAt in the shader).
 uniform vec3 uSceneCentre;
 uniform float uShadowRadius;

@@ -57,11 +57,11 @@ class GlStudyRendererImpl final : public StudyRenderer {
           renderer_->render(scene_.camera, now, &map.cube, cubeVersion, ratio);
       out.framesMs.push_back(msSince(start));
       out.shadowFramesMs.push_back(stats.shadowPassMs);
-      if (stats.shadowMapsReused != 0 || stats.shadowMapsRendered != lights.shadowCasters.size()) {
+      if (stats.shadowMapsReused != 0 || stats.shadowMapsRendered != lights.shadowDirs.size()) {
         return std::unexpected(fmt::format(
             "{} of {} shadow maps drawn, {} reused: not a frame "
             "with new lights",
-            stats.shadowMapsRendered, lights.shadowCasters.size(), stats.shadowMapsReused));
+            stats.shadowMapsRendered, lights.shadowDirs.size(), stats.shadowMapsReused));
       }
     }
     out.medianMs = medianOf(out.framesMs);

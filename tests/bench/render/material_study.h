@@ -30,10 +30,12 @@ struct MaterialStudyOptions {
   std::vector<std::size_t> counts{16, 64, 256, 1024};
   bool gl = true;     // also the OpenGL renderer (headless)
   int glFrames = 3;   // timed OpenGL frames per point (the median is reported)
+  std::size_t glShadowMaps = 256;  // OpenGL: min(N, this) shadow maps, shared by group below N
   std::vector<std::string> materials;  // names of materialStudyMaterials(); empty: all
   std::string command;                 // for the report
-  // When set: per material, map and N, a PNG of the reference, the lights' and the ratio's render
-  // side by side, all at the reference's exposure (to look at where the errors are).
+  // When set: per material, map, N and renderer, a PNG of the reference, the lights' and the
+  // ratio's render side by side, all at the reference's exposure (to look at where the errors
+  // are): <material>-<map>-<N>-embree.png and -gl.png.
   std::string dumpDir;
 };
 

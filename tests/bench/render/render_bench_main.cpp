@@ -19,6 +19,7 @@
 
 #include "bench/machine_info.h"
 #include "bench/markdown_output.h"
+#include "client/render/shading_lights.h"
 #include "bench/render/material_study.h"
 #include "bench/render/render_report.h"
 #include "bench/render/study_run.h"
@@ -27,7 +28,6 @@
 namespace {
 
 using namespace vem::bench;
-
 
 struct BenchOptions {
   // One sound map per kind of light (--list-maps): an outdoor sun (58 % of the power in 0.1 % of
@@ -47,6 +47,7 @@ struct BenchOptions {
   bool materials = false;  // the material study (material_study.h) instead of the sweeps
   std::vector<std::string> materialNames;
   std::vector<std::size_t> counts;  // --materials: the light counts N (empty: the study's)
+  std::size_t glShadowMaps = 256;   // --materials: OpenGL's shadow maps S = min(N, this)
   std::string dumpDir;
   std::string sweeps = "abcde";
   std::string table;
@@ -100,6 +101,9 @@ int parse(int argc, char** argv, BenchOptions& o) {
       ->delimiter(',');
   app.add_option("--counts", o.counts, "with --materials: the light counts N, e.g. 16,256")
       ->delimiter(',');
+  app.add_option("--gl-shadow-maps", o.glShadowMaps,
+                 "with --materials: OpenGL's shadow maps, min(N, this), shared by group below N")
+      ->check(CLI::Range(std::size_t(1), vem::render::kMaxShadowMaps));
   app.add_flag("--list-maps", o.listMaps, "print how concentrated each HDRI's light is, and exit");
   app.add_option("--sweeps", o.sweeps, "the sweeps to run, e.g. ad (study_sweeps.h)");
   app.add_option("--table", o.table, "write the study (markdown) to this file");
@@ -251,6 +255,7 @@ int main(int argc, char** argv) {
     study.dumpDir = options.dumpDir;
     study.gl = !options.noGl;
     study.glFrames = options.glFrames;
+    study.glShadowMaps = options.glShadowMaps;
     if (!options.counts.empty()) study.counts = options.counts;
     study.command = commandLine(argc, argv);
     auto report = runMaterialStudy(study);

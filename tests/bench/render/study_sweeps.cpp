@@ -96,6 +96,27 @@ Sweep clusteringSweep(bool withGl) {
   return sweep;
 }
 
+// Issue 20 part 2: with S < N, lights share maps by group (each map at its group's mean) or read
+// the nearest caster's (the paper's scheme). The error should keep falling with N at fixed S.
+Sweep shadowGroupSweep() {
+  Sweep sweep{
+      "f", "Shadow maps shared by S < N lights (S = 64 maps of 256 px, regions on)", "N", {}};
+  for (const render::ShadowGrouping grouping :
+       {render::ShadowGrouping::Cluster, render::ShadowGrouping::NearestCaster}) {
+    SweepSeries series{grouping == render::ShadowGrouping::Cluster
+                           ? "OpenGL, a map per group of lights"
+                           : "OpenGL, the nearest caster's map",
+                       {}};
+    for (std::size_t n = 64; n <= 1024; n *= 2) {
+      StudyConfig config = baseConfig(RendererKind::Gl, n);
+      config.lighting.shadowGrouping = grouping;
+      series.points.push_back({config, fmt::format("{}", n)});
+    }
+    sweep.series.push_back(std::move(series));
+  }
+  return sweep;
+}
+
 }  // namespace
 
 const char* rendererLabel(RendererKind kind) {
@@ -105,9 +126,10 @@ const char* rendererLabel(RendererKind kind) {
 std::string StudyConfig::key() const {
   // Embree traces every light's shadow: S and the map resolution do not change its frame.
   const bool gl = renderer == RendererKind::Gl;
-  return fmt::format("{} N{} S{} px{} r{} q{}", rendererLabel(renderer), lighting.lightCount,
+  const bool nearest = gl && lighting.shadowGrouping == render::ShadowGrouping::NearestCaster;
+  return fmt::format("{} N{} S{} px{} r{} q{}{}", rendererLabel(renderer), lighting.lightCount,
                      gl ? lighting.shadowedCount : 0, gl ? shadowMapPx : 0,
-                     lighting.regions ? 1 : 0, lighting.clusterBudget);
+                     lighting.regions ? 1 : 0, lighting.clusterBudget, nearest ? " nearest" : "");
 }
 
 std::vector<Sweep> studySweeps(bool withGl) {
@@ -118,6 +140,7 @@ std::vector<Sweep> studySweeps(bool withGl) {
   }
   sweeps.push_back(regionSweep(withGl));
   sweeps.push_back(clusteringSweep(withGl));
+  if (withGl) sweeps.push_back(shadowGroupSweep());
   return sweeps;
 }
 

@@ -5,7 +5,8 @@
 //   b  S = 0, 4, 16, 64, 256 at N = 256, OpenGL;
 //   c  shadow-map resolution 64 ... 1024 px at N = 256, S = 64, OpenGL;
 //   d  regions on and off at N = 16 ... 1024, OpenGL and Embree;
-//   e  clustering Q = 8, 32, 128 and off at N = 256 and 1024, OpenGL and Embree.
+//   e  clustering Q = 8, 32, 128 and off at N = 256 and 1024, OpenGL and Embree;
+//   f  N = 64 ... 1024 at S = 64, the maps shared by group or the nearest caster's, OpenGL.
 // Embree traces a shadow ray for every light, so S and the resolution do not change its image.
 #pragma once
 
