@@ -27,9 +27,8 @@ void EnvironmentLightingTextures::update(const render::EnvironmentLighting* ligh
   }
 }
 
-void EnvironmentLightingTextures::bindMaterial(const GlProgram& program,
-                                               std::size_t materialIndex, GLenum irradianceUnit,
-                                               GLenum specularUnit) const {
+void EnvironmentLightingTextures::bindMaterial(const GlProgram& program, std::size_t materialIndex,
+                                               GLenum irradianceUnit, GLenum specularUnit) const {
   irradiance_.bind(irradianceUnit);
   program.set("uIrradiance", int(irradianceUnit));
   program.set("uHasIrradiance", irradiance_.present() ? 1 : 0);
@@ -45,6 +44,7 @@ void EnvironmentLightingTextures::bindMaterial(const GlProgram& program,
   const render::DirectionalAlbedo& albedo = lighting_->specular[materialIndex]->albedo;
   program.set("uAlbedoScale", std::span<const float>(albedo.scale));
   program.set("uAlbedoBias", std::span<const float>(albedo.bias));
+  program.set("uSpecularLookupBlend", lighting_->specular[materialIndex]->lookupBlend);
 }
 
 }  // namespace vem::gl

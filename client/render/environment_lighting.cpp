@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include <glm/glm.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <glm/glm.hpp>
 
 #include "client/render/cube_map_sampling.h"
 #include "client/render/shading_model.h"
@@ -102,8 +102,7 @@ float lobeWidthRad(const scene::Material& m) {
     }
     case scene::Lobe::Blinn:
       return 2.0F * std::acos(std::pow(0.1F, 1.0F / std::max(m.exponent, 1e-3F)));
-    case scene::Lobe::Phong:
-      return std::acos(std::pow(0.1F, 1.0F / std::max(m.exponent, 1e-3F)));
+    case scene::Lobe::Phong: return std::acos(std::pow(0.1F, 1.0F / std::max(m.exponent, 1e-3F)));
     case scene::Lobe::Lambertian: break;
   }
   return kPi;
@@ -122,8 +121,7 @@ glm::vec3 around(glm::vec3 z, float cosTheta, float phi) {
   glm::vec3 b;
   frameAround(z, t, b);
   const float sinTheta = std::sqrt(std::max(0.0F, 1.0F - cosTheta * cosTheta));
-  return glm::normalize(sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b +
-                        cosTheta * z);
+  return glm::normalize(sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * z);
 }
 
 // One stratified importance sample of the lobe at (u1, u2): the light direction and its density
@@ -226,8 +224,8 @@ DirectionalAlbedo directionalAlbedoOf(const scene::Material& material) {
 
 glm::vec3 directionalAlbedo(const DirectionalAlbedo& table, const scene::Material& material,
                             float cosNormalEye) {
-  const float x = std::clamp(cosNormalEye * kAlbedoTableSize - 0.5F, 0.0F,
-                             float(kAlbedoTableSize - 1));
+  const float x =
+      std::clamp(cosNormalEye * kAlbedoTableSize - 0.5F, 0.0F, float(kAlbedoTableSize - 1));
   const int i0 = int(x);
   const int i1 = std::min(i0 + 1, kAlbedoTableSize - 1);
   const float w = x - float(i0);
@@ -262,12 +260,11 @@ CubeMap prefilteredCubeOf(const CubeMap& radiance, const scene::Material& materi
   const float a2 = a * a;
   const float e = std::max(material.exponent, 0.0F);
   // Phong's weight is (R . l)^(e + 1); Blinn's cos(h)^e (R . l) with R . l = 2 cos(h)^2 - 1.
-  const float minCos = material.lobe == scene::Lobe::Phong
-                           ? std::pow(kNegligibleWeight, 1.0F / (e + 1.0F))
-                       : material.lobe == scene::Lobe::Blinn
-                           ? 2.0F * std::pow(std::pow(kNegligibleWeight, 1.0F / std::max(e, 1e-3F)),
-                                             2.0F) - 1.0F
-                           : 0.0F;
+  const float minCos =
+      material.lobe == scene::Lobe::Phong ? std::pow(kNegligibleWeight, 1.0F / (e + 1.0F))
+      : material.lobe == scene::Lobe::Blinn
+          ? 2.0F * std::pow(std::pow(kNegligibleWeight, 1.0F / std::max(e, 1e-3F)), 2.0F) - 1.0F
+          : 0.0F;
   return cubeOf(std::max(facePx, kMinPrefilteredFacePx), [&](glm::vec3 r) {
     glm::vec3 sum(0.0F);
     float weights = 0.0F;
@@ -302,7 +299,8 @@ EnvironmentLighting makeEnvironmentLighting(const CubeMap& radiance,
     const scene::Material& m = materials[i];
     if (!m.glossy() || m.mirrorLike()) continue;
     if (!clipped) clipped = clippedAt(radiance, out.peakLuminance);
-    out.specular[i] = SpecularEnvironment{prefilteredCubeOf(*clipped, m), directionalAlbedoOf(m)};
+    out.specular[i] = SpecularEnvironment{prefilteredCubeOf(*clipped, m), directionalAlbedoOf(m),
+                                          specularLookupBlend(m)};
   }
   return out;
 }
@@ -317,7 +315,8 @@ std::vector<float> peakFractionsOf(const EnvironmentLighting& lighting, const Cu
   for (std::size_t i = 0; i < lights.size(); ++i) {
     const CubeTexel t = cubeTexelOf(glm::dvec3(lights[i].dir), level.facePx);
     const std::vector<float>& face = level.faces[std::size_t(t.face)];
-    const std::size_t k = 3 * (std::size_t(t.row) * std::size_t(level.facePx) + std::size_t(t.column));
+    const std::size_t k =
+        3 * (std::size_t(t.row) * std::size_t(level.facePx) + std::size_t(t.column));
     const auto y = float(luminance(glm::vec3(face[k], face[k + 1], face[k + 2])));
     out[i] = y > lighting.peakLuminance ? 1.0F - lighting.peakLuminance / y : 0.0F;
   }
@@ -336,9 +335,31 @@ glm::vec3 unshadowedSpecular(const EnvironmentLighting& lighting, std::size_t ma
     return glm::vec3(0.0F);
   }
   const SpecularEnvironment& env = *lighting.specular[materialIndex];
-  const glm::vec3 r = reflectedDirection(n, wo);
-  return sampleCubeMapSeamless(env.prefiltered, r) *
+  const glm::vec3 d = specularLookupDirection(n, wo, env.lookupBlend);
+  return sampleCubeMapSeamless(env.prefiltered, d) *
          directionalAlbedo(env.albedo, material, glm::dot(n, wo));
+}
+
+float specularLookupBlend(const scene::Material& material) {
+  float alpha = 0.0F;
+  switch (material.lobe) {
+    case scene::Lobe::Ggx: alpha = material.roughness * material.roughness; break;
+    case scene::Lobe::Blinn:
+      alpha = std::sqrt(2.0F / (std::max(material.exponent, 0.0F) + 2.0F));
+      break;
+    case scene::Lobe::Phong:
+    case scene::Lobe::Lambertian: return 1.0F;
+  }
+  const float r = std::clamp(alpha, 0.0F, 1.0F);
+  const float s = 1.0F - r;
+  return s * (std::sqrt(s) + r);
+}
+
+glm::vec3 specularLookupDirection(glm::vec3 n, glm::vec3 wo, float blend) {
+  const glm::vec3 r = reflectedDirection(n, wo);
+  const glm::vec3 d = n + (r - n) * blend;
+  const float length = glm::length(d);
+  return length > 0.0F ? d / length : r;
 }
 
 }  // namespace vem::render

@@ -62,10 +62,11 @@ struct DirectionalAlbedo {
 struct SpecularEnvironment {
   CubeMap prefiltered;  // P(R), one level
   DirectionalAlbedo albedo;
+  float lookupBlend = 1.0F;  // specularLookupBlend of the material
 };
 
 struct EnvironmentLighting {
-  CubeMap irradiance;  // E(n), one level; empty when not built (no diffuse material)
+  CubeMap irradiance;          // E(n), one level; empty when not built (no diffuse material)
   float peakLuminance = 0.0F;  // T: the specular cubes hold the environment clipped at T
   // One entry per scene material: set for glossy materials that are not mirror-like.
   std::vector<std::optional<SpecularEnvironment>> specular;
@@ -73,8 +74,8 @@ struct EnvironmentLighting {
 
 struct EnvironmentLightingOptions {
   int irradianceFacePx = 16;
-  bool diffuse = true;  // build the irradiance cube
-  bool specular = true;  // build the glossy materials' prefiltered cubes
+  bool diffuse = true;       // build the irradiance cube
+  bool specular = true;      // build the glossy materials' prefiltered cubes
   double peakFactor = 20.0;  // T = peakFactor x the mean luminance of the environment
 };
 
@@ -102,8 +103,17 @@ struct EnvironmentLightingOptions {
                                                  const CubeMap& radiance,
                                                  std::span<const Light> lights);
 
+// Where P is read: the lobe's dominant direction, normalize(mix(n, R, b)) with b this blend. The
+// split sum's P(R) was prefiltered with n = wo = R; a rough GGX or Blinn lobe seen away from the
+// normal leans toward n (its off-specular peak), so with broad light P(R) takes light from too
+// near the horizon. b = s (sqrt(s) + r) with s = 1 - r and r the linear roughness (Lagarde and
+// de Rousiers, "Moving Frostbite to PBR", 2014, section 4.9.3; for Blinn r from the exponent by
+// alpha^2 = 2 / (e + 2)); 1 for Phong, whose lobe is centred on R.
+[[nodiscard]] float specularLookupBlend(const scene::Material& material);
+[[nodiscard]] glm::vec3 specularLookupDirection(glm::vec3 n, glm::vec3 wo, float blend);
+
 // The unshadowed radiances toward wo (n unit, turned toward wo): diffuseBrdf E(n), and
-// P(R) rho(n . wo) (0 without a prefiltered cube for the material).
+// P(D) rho(n . wo), D = specularLookupDirection (0 without a prefiltered cube for the material).
 [[nodiscard]] glm::vec3 unshadowedDiffuse(const EnvironmentLighting& lighting,
                                           const scene::Material& material, glm::vec3 n);
 [[nodiscard]] glm::vec3 unshadowedSpecular(const EnvironmentLighting& lighting,

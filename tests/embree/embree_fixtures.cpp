@@ -12,6 +12,7 @@
 #include "core/default_pattern.h"
 #include "core/light_generator.h"
 #include "core/sampling_tables.h"
+#include "mapio/map_file.h"
 
 namespace vem::embree::testing {
 
@@ -80,6 +81,12 @@ glm::ivec2 pixelOfDirection(const EnvMap& map, glm::vec3 dir) {
   const int x = int((phi + std::numbers::pi) / (2 * std::numbers::pi) * map.width);
   const int y = int(theta / std::numbers::pi * map.height);
   return {std::clamp(x, 0, map.width - 1), std::clamp(y, 0, map.height - 1)};
+}
+
+EnvMap sharedHdri(const std::string& name) {
+  auto map = mapio::loadMap(std::string(VEM_SHARED_DATA_DIR) + "/hdri/" + name + ".exr");
+  EXPECT_TRUE(map.has_value()) << name << ": " << (map ? std::string() : map.error().message);
+  return map ? std::move(*map) : EnvMap::filled(MapLayout::Sphere, 2, 1, glm::vec3(0.0F));
 }
 
 EnvMap smoothSky(int width, int height) {

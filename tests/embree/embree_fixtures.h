@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -39,6 +40,8 @@ inline constexpr int kHeightPx = 48;
                                  float background);
 // The map pixel holding `dir`.
 [[nodiscard]] glm::ivec2 pixelOfDirection(const EnvMap& map, glm::vec3 dir);
+// ../shared/data/hdri/<name>.exr (fails the test when it cannot be read; an empty map then).
+[[nodiscard]] EnvMap sharedHdri(const std::string& name);
 // A smooth sky (bright zenith, warm band near +X at 30 degrees elevation, dark ground).
 [[nodiscard]] EnvMap smoothSky(int width, int height);
 

@@ -43,8 +43,8 @@ RatioRender renderByRatio(const scene::Scene& s, const scene::OrbitCamera& camer
       shadingLightsFor(lightsFrom(map, lightCount), geometry, !byRatio, 72);
   LightRenderOptions options;
   options.environment = byRatio ? &environment : nullptr;
-  RatioRender out{renderWithLights(scene, camera, kWidthPx, kHeightPx, lights, geometry, &cube,
-                                   options)};
+  RatioRender out{
+      renderWithLights(scene, camera, kWidthPx, kHeightPx, lights, geometry, &cube, options)};
   for (const float v : out.image.rgb) out.finite = out.finite && std::isfinite(v);
   return out;
 }
@@ -97,6 +97,30 @@ TEST(RatioShading, SunAtOneHundredThousandTimesTheSkyStaysFiniteAndNearTheRefere
     EXPECT_LT(ratioError, 0.04) << "roughness " << sphere.roughness;
     EXPECT_LT(ratioError, sumsError + 0.015) << "roughness " << sphere.roughness;
   }
+}
+
+// Issue 20: "at most 4 % at the frame time of today's N = 256". A rough gold GGX sphere (alpha 0.6)
+// on a plane under city's broad light, N = 256, against a 1024-sample reference: the split sum read
+// P along R took light from too near the horizon for a lobe that leans toward the normal, and
+// stayed 5.8 % off at every N (docs/shading-by-ratio.md); read along the dominant direction
+// (render::specularLookupDirection) it is within 4 %.
+TEST(RatioShading, RoughGgxUnderBroadLightIsWithinFourPerCentOfTheReference) {
+  const EnvMap city = sharedHdri("city");
+  const scene::Scene s =
+      sphereScene(glm::vec3(0, 0.5F, 0), 0.5F, true,
+                  ggx(std::sqrt(0.6F), glm::vec3(1.0F, 0.78F, 0.34F), 0.0F), lambertian(0.5F));
+  const scene::OrbitCamera camera = cameraAt(glm::vec3(0, 0.5F, 0), 2.2F, 0.35F);
+  ReferenceOptions referenceOptions;
+  referenceOptions.minSamples = 1024;
+  referenceOptions.maxSamples = 1024;
+  const ReferenceResult reference =
+      renderReference(built(s), camera, kWidthPx, kHeightPx, city, referenceOptions);
+  const RatioRender ratio = renderByRatio(s, camera, city, 256);
+  ASSERT_TRUE(ratio.finite);
+  const double error = render::compareImages(ratio.image, reference.image).relativeRms;
+  std::printf("rough GGX under city, N = 256, by ratio: %.2f %% (reference noise %.2f %%)\n",
+              100.0 * error, 100.0 * reference.relativeError);
+  EXPECT_LT(error, 0.04);
 }
 
 }  // namespace

@@ -56,11 +56,35 @@ scene::Material lobe(scene::Lobe kind, float exponent) {
   return m;
 }
 
-const std::vector<glm::vec3> kNormals{glm::normalize(glm::vec3(0, 1, 0)),
-                                      glm::normalize(glm::vec3(1, 1, 0)),
-                                      glm::normalize(glm::vec3(0.3F, 0.2F, -1)),
-                                      glm::normalize(glm::vec3(1, 0, 0)),
-                                      glm::normalize(glm::vec3(-0.2F, -1, 0.4F))};
+const std::vector<glm::vec3> kNormals{
+    glm::normalize(glm::vec3(0, 1, 0)), glm::normalize(glm::vec3(1, 1, 0)),
+    glm::normalize(glm::vec3(0.3F, 0.2F, -1)), glm::normalize(glm::vec3(1, 0, 0)),
+    glm::normalize(glm::vec3(-0.2F, -1, 0.4F))};
+
+// The split sum's P is read toward the lobe's dominant direction: R for Phong (its lobe is centred
+// on R) and for a sharp lobe, leaning toward n as GGX or Blinn get rougher; at normal incidence
+// n = R, so every blend reads n.
+TEST(EnvironmentLighting, SpecularLookupLeansTowardTheNormalAsTheLobeGetsRougher) {
+  EXPECT_EQ(specularLookupBlend(lobe(scene::Lobe::Phong, 10.0F)), 1.0F);
+  float previous = 1.0F;
+  for (const float alpha : {0.01F, 0.1F, 0.3F, 0.6F, 1.0F}) {
+    const float blend = specularLookupBlend(ggx(std::sqrt(alpha)));
+    EXPECT_LT(blend, previous) << "alpha " << alpha;
+    EXPECT_GE(blend, 0.0F);
+    previous = blend;
+  }
+  EXPECT_NEAR(specularLookupBlend(ggx(0.1F)), 1.0F, 0.01F);  // alpha 0.01: as sharp as R
+  EXPECT_EQ(specularLookupBlend(ggx(1.0F)), 0.0F);           // alpha 1: the normal
+  // Blinn: the GGX blend of the alpha with the same peak, alpha^2 = 2 / (e + 2).
+  EXPECT_NEAR(specularLookupBlend(lobe(scene::Lobe::Blinn, 98.0F)),
+              specularLookupBlend(ggx(std::sqrt(std::sqrt(0.02F)))), 1e-5F);
+  const glm::vec3 n(0.0F, 1.0F, 0.0F);
+  const glm::vec3 grazing = glm::normalize(glm::vec3(1.0F, 0.2F, 0.0F));
+  const glm::vec3 r = reflectedDirection(n, grazing);
+  EXPECT_NEAR(glm::length(specularLookupDirection(n, grazing, 0.5F)), 1.0F, 1e-6F);
+  EXPECT_GT(glm::dot(specularLookupDirection(n, grazing, 0.5F), n), glm::dot(r, n));
+  EXPECT_NEAR(glm::dot(specularLookupDirection(n, n, 0.3F), n), 1.0F, 1e-6F);
+}
 
 TEST(EnvironmentLighting, UniformSphereGivesPiIrradianceInEveryDirection) {
   const CubeMap cube = cubeFrom(32, [](glm::vec3) { return glm::vec3(2.0F); });
@@ -78,12 +102,15 @@ TEST(EnvironmentLighting, UniformSphereGivesPiIrradianceInEveryDirection) {
 TEST(EnvironmentLighting, SkyAboveBlackGroundWeighsTexelsByTheirSolidAngle) {
   // Without the solid-angle weights the corner texels of each face would count as much as the
   // centre ones, and a horizontal surface would not see exactly half the sky's pi.
-  const CubeMap cube = cubeFrom(32, [](glm::vec3 d) { return glm::vec3(d.y > 0.0F ? 1.0F : 0.0F); });
+  const CubeMap cube =
+      cubeFrom(32, [](glm::vec3 d) { return glm::vec3(d.y > 0.0F ? 1.0F : 0.0F); });
   EnvironmentLighting lighting;
   lighting.irradiance = irradianceCubeOf(cube, 16);
   scene::Material white;
   white.diffuseAlbedo = glm::vec3(1.0F);
-  const auto irradiance = [&](glm::vec3 n) { return kPi * unshadowedDiffuse(lighting, white, n).x; };
+  const auto irradiance = [&](glm::vec3 n) {
+    return kPi * unshadowedDiffuse(lighting, white, n).x;
+  };
   EXPECT_NEAR(irradiance(glm::vec3(0, 1, 0)), kPi, kPi * 0.003F);
   EXPECT_NEAR(irradiance(glm::vec3(0, -1, 0)), 0.0F, kPi * 0.003F);  // texels 2.5 degrees off
   // A tilted normal at angle t from up: (pi / 2) (1 + cos t); sampled between texel centres.
@@ -112,7 +139,8 @@ TEST(EnvironmentLighting, SunAtOneHundredThousandTimesTheSkyKeepsTheSkyAndTheSun
     ASSERT_TRUE(std::isfinite(got));
     // Bilinear reads of a 16 px irradiance cube: the sun's cosine is linear over a texel, up to
     // the curvature of the cosine, under 2 % of the sun's peak.
-    EXPECT_NEAR(got, expected, 0.02F * 1e5F * sunSr + 0.01F * kPi) << n.x << " " << n.y << " " << n.z;
+    EXPECT_NEAR(got, expected, 0.02F * 1e5F * sunSr + 0.01F * kPi)
+        << n.x << " " << n.y << " " << n.z;
   }
 }
 
@@ -171,9 +199,8 @@ TEST(EnvironmentLighting, DirectionalAlbedoTableMatchesTheHemisphereIntegralOfTh
 
 TEST(EnvironmentLighting, PrefilteredSunPeaksInItsOwnDirectionAndFallsWithTheLobe) {
   const glm::vec3 sunDir = glm::normalize(glm::vec3(0.3F, 0.8F, 0.2F));
-  const CubeMap cube = cubeFrom(32, [&](glm::vec3 d) {
-    return glm::vec3(glm::dot(d, sunDir) > 0.995F ? 1e5F : 1.0F);
-  });
+  const CubeMap cube = cubeFrom(
+      32, [&](glm::vec3 d) { return glm::vec3(glm::dot(d, sunDir) > 0.995F ? 1e5F : 1.0F); });
   const scene::Material rough = ggx(0.55F);
   const scene::Material sharp = ggx(0.3F);
   const CubeMap pRough = prefilteredCubeOf(cube, rough);
@@ -199,9 +226,8 @@ TEST(EnvironmentLighting, PrefilteredSunPeaksInItsOwnDirectionAndFallsWithTheLob
 
 TEST(EnvironmentLighting, BlackAndNanTexelsGiveZeroNotNan) {
   const CubeMap black = cubeFrom(16, [](glm::vec3) { return glm::vec3(0.0F); });
-  const CubeMap nanPatch = cubeFrom(16, [](glm::vec3 d) {
-    return d.x > 0.9F ? glm::vec3(std::nanf("")) : glm::vec3(0.0F);
-  });
+  const CubeMap nanPatch = cubeFrom(
+      16, [](glm::vec3 d) { return d.x > 0.9F ? glm::vec3(std::nanf("")) : glm::vec3(0.0F); });
   std::vector<scene::Material> materials{ggx(0.3F), lobe(scene::Lobe::Blinn, 40)};
   for (const CubeMap* cube : {&black, &nanPatch}) {
     const EnvironmentLighting lighting = makeEnvironmentLighting(*cube, materials);

@@ -44,6 +44,7 @@ uniform int uSpecularByRatio;      // the material has a prefiltered cube
 uniform float uAlbedoScale[32];    // render::kAlbedoTableSize entries of rho = F0 scale + bias
 uniform float uAlbedoBias[32];
 uniform float uMinEffectiveLights;
+uniform float uSpecularLookupBlend;  // render::specularLookupBlend: P is read toward mix(n, R, b)
 
 const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);  // Rec. 709 (core/color.h)
 
@@ -168,8 +169,8 @@ vec3 ratioShading(vec3 n, vec3 wo, vec3 p) {
     float effective = sumY2 > 0.0 ? sumY * sumY / sumY2 : 0.0;
     float t = clamp(effective / uMinEffectiveLights, 0.0, 1.0);
     vec3 ratioS = mix(ratioD, ratioOf(shadowedS, unshadowedS), t);
-    vec3 r = reflectedDirection(n, wo);
-    radiance += textureLod(uPrefiltered, r, 0.0).rgb * directionalAlbedo(dot(n, wo)) * ratioS +
+    vec3 d = normalize(mix(n, reflectedDirection(n, wo), uSpecularLookupBlend));
+    radiance += textureLod(uPrefiltered, d, 0.0).rgb * directionalAlbedo(dot(n, wo)) * ratioS +
                 peakS;
   }
   return radiance;

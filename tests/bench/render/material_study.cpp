@@ -1,6 +1,8 @@
 #include "bench/render/material_study.h"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +19,7 @@
 #include "client/render/image_metrics.h"
 #include "client/render/tone_mapping.h"
 #include "client/scene/default_scene.h"
+#include "util/svg_plot.h"
 
 namespace vem::bench {
 namespace {
@@ -110,7 +113,95 @@ struct Row {
   double referenceSeconds = 0.0;
 };
 
-// OpenGL's shadow maps: one per light up to this many (the main study's largest atlas).
+// The reference's error after `seconds`, from its measured c / sqrt(spp) curve.
+struct CurveOfMap {
+  std::string material;
+  double c = 0.0;
+  double secondsPerSample = 0.0;
+};
+
+std::string slug(const std::string& name) {
+  std::string out;
+  for (const char ch : name) {
+    if (std::isalnum(static_cast<unsigned char>(ch))) {
+      out += char(std::tolower(static_cast<unsigned char>(ch)));
+    } else if (!out.empty() && out.back() != '-') {
+      out += '-';
+    }
+  }
+  return out;
+}
+
+// One SVG per material: each renderer and shading over N (means over the maps), and the
+// reference's curve over the same span of time.
+bool writeMaterialPlots(const std::string& prefix, const std::vector<Row>& rows,
+                        const std::vector<CurveOfMap>& curves) {
+  std::vector<std::string> materials;
+  for (const Row& r : rows) {
+    if (std::ranges::find(materials, r.material) == materials.end())
+      materials.push_back(r.material);
+  }
+  for (const std::string& material : materials) {
+    std::vector<PlotSeries> series;
+    double fastest = 1e30;
+    double slowest = 0.0;
+    int colour = 0;
+    for (const std::string renderer : {"Embree", "OpenGL"}) {
+      for (const std::string shading : {"lights", "ratio"}) {
+        std::map<std::size_t, std::array<double, 3>> byN;  // error, seconds, maps
+        for (const Row& r : rows) {
+          if (r.material != material || r.renderer != renderer || r.shading != shading) continue;
+          auto& sums = byN[r.lights];
+          sums[0] += r.error;
+          sums[1] += r.frameMs * 1e-3;
+          sums[2] += 1.0;
+        }
+        if (byN.empty()) continue;
+        PlotSeries s;
+        s.name = fmt::format("{}, {}", renderer, shading == "ratio" ? "by ratio" : "by the lights");
+        s.colour = colour++;
+        s.marker = renderer == "Embree" ? PlotMarker::Circle : PlotMarker::Square;
+        s.dashed = shading == "lights";
+        for (const auto& [n, sums] : byN) {
+          const double seconds = sums[1] / sums[2];
+          s.points.emplace_back(seconds, sums[0] / sums[2]);
+          s.labels.push_back(renderer == "Embree" && shading == "ratio" ? fmt::format("N={}", n)
+                                                                        : std::string());
+          fastest = std::min(fastest, seconds);
+          slowest = std::max(slowest, seconds);
+        }
+        series.push_back(std::move(s));
+      }
+    }
+    std::vector<const CurveOfMap*> mine;
+    for (const CurveOfMap& c : curves) {
+      if (c.material == material) mine.push_back(&c);
+    }
+    if (!mine.empty() && slowest > 0.0) {
+      PlotSeries reference;
+      reference.name = "Monte Carlo reference (path tracer)";
+      reference.colour = colour++;
+      reference.marker = PlotMarker::Diamond;
+      const double from = fastest / 2.0;
+      const double to = std::max(slowest * 4.0, 30.0);
+      for (double t = from; t <= to * 1.0001; t *= std::sqrt(2.0)) {
+        double error = 0.0;
+        for (const CurveOfMap* c : mine) error += c->c / std::sqrt(t / c->secondsPerSample);
+        reference.points.emplace_back(t, error / double(mine.size()));
+        reference.labels.emplace_back();
+      }
+      series.push_back(std::move(reference));
+    }
+    PlotText text;
+    text.title =
+        fmt::format("{}: relative RMS error against frame time, mean over the maps", material);
+    text.xLabel = "time, s";
+    text.yLabel = "relative RMS error";
+    text.yPercent = true;
+    if (!writeLogLogSvg(prefix + "-" + slug(material) + ".svg", text, series)) return false;
+  }
+  return true;
+}
 
 std::string percent(double x) { return fmt::format("{:.2f} %", 100.0 * x); }
 
@@ -147,6 +238,7 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
   std::vector<Row> rows;
   std::string glLabel;
   std::string curves;
+  std::vector<CurveOfMap> curvesOfMaps;
   std::string prefilter;
   for (const StudyMaterial& material : studyMaterials()) {
     if (!options.materials.empty() &&
@@ -181,6 +273,7 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
       if (!reference) return std::unexpected(reference.error());
       const ReferenceCurve curve =
           referenceCurve(*embreeScene, *scene, map, options.size, reference->image);
+      curvesOfMaps.push_back({material.name, curve.c, curve.secondsPerSample});
       curves += fmt::format("| {} | {} | {} spp, {:.1f} s{} | {} | {} | {} | {:.3f} |\n",
                             material.name, map.name, reference->samplesPerPixel,
                             reference->renderSeconds, reference->fromCache ? " (cached)" : "",
@@ -256,6 +349,15 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
       "\nPrefiltering (once per cube map, not per frame), ms:\n\n| material | map | ms "
       "|\n|---|---|---:|\n" +
       prefilter;
+  if (!options.plotPrefix.empty()) {
+    if (!writeMaterialPlots(options.plotPrefix, rows, curvesOfMaps)) {
+      return std::unexpected("cannot write the plots " + options.plotPrefix + "-*.svg");
+    }
+    out += fmt::format(
+        "\nError against time per material (the mean over the maps; the reference's curve from "
+        "its measured c / sqrt(spp)): {}-*.svg.\n",
+        std::filesystem::path(options.plotPrefix).filename().string());
+  }
   return out;
 }
 

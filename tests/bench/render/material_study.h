@@ -37,6 +37,10 @@ struct MaterialStudyOptions {
   // ratio's render side by side, all at the reference's exposure (to look at where the errors
   // are): <material>-<map>-<N>-embree.png and -gl.png.
   std::string dumpDir;
+  // When set: per material, <plotPrefix>-<material>.svg, the error against the frame time (the
+  // mean over the maps) of each renderer and shading as N grows, beside the Monte Carlo
+  // reference's own curve (its error at each time, the mean over the maps).
+  std::string plotPrefix;
 };
 
 // The report (markdown), or the error.

@@ -19,10 +19,10 @@
 
 #include "bench/machine_info.h"
 #include "bench/markdown_output.h"
-#include "client/render/shading_lights.h"
 #include "bench/render/material_study.h"
 #include "bench/render/render_report.h"
 #include "bench/render/study_run.h"
+#include "client/render/shading_lights.h"
 #include "mapio/map_file.h"
 
 namespace {
@@ -107,7 +107,9 @@ int parse(int argc, char** argv, BenchOptions& o) {
   app.add_flag("--list-maps", o.listMaps, "print how concentrated each HDRI's light is, and exit");
   app.add_option("--sweeps", o.sweeps, "the sweeps to run, e.g. ad (study_sweeps.h)");
   app.add_option("--table", o.table, "write the study (markdown) to this file");
-  app.add_option("--plot", o.plot, "write the error-against-time plot (PNG, and SVG beside it)");
+  app.add_option("--plot", o.plot,
+                 "write the error-against-time plot (PNG, and SVG beside it); with --materials, "
+                 "the prefix of one SVG per material");
   app.add_option("--section", o.section, "write the docs/BENCHMARKS.md section to this file");
   try {
     app.parse(argc, argv);
@@ -256,6 +258,7 @@ int main(int argc, char** argv) {
     study.gl = !options.noGl;
     study.glFrames = options.glFrames;
     study.glShadowMaps = options.glShadowMaps;
+    study.plotPrefix = options.plot;
     if (!options.counts.empty()) study.counts = options.counts;
     study.command = commandLine(argc, argv);
     auto report = runMaterialStudy(study);
