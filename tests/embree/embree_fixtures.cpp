@@ -83,6 +83,13 @@ glm::ivec2 pixelOfDirection(const EnvMap& map, glm::vec3 dir) {
   return {std::clamp(x, 0, map.width - 1), std::clamp(y, 0, map.height - 1)};
 }
 
+ReferenceOptions fixedSamples(int samplesPerPixel) {
+  ReferenceOptions options;
+  options.minSamples = samplesPerPixel;
+  options.maxSamples = samplesPerPixel;
+  return options;
+}
+
 EnvMap sharedHdri(const std::string& name) {
   auto map = mapio::loadMap(std::string(VEM_SHARED_DATA_DIR) + "/hdri/" + name + ".exr");
   EXPECT_TRUE(map.has_value()) << name << ": " << (map ? std::string() : map.error().message);

@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "client/embree/embree_scene.h"
+#include "client/embree/reference_renderer.h"
 #include "client/render/linear_image.h"
 #include "client/render/shading_lights.h"
 #include "client/scene/orbit_camera.h"
@@ -40,6 +41,9 @@ inline constexpr int kHeightPx = 48;
                                  float background);
 // The map pixel holding `dir`.
 [[nodiscard]] glm::ivec2 pixelOfDirection(const EnvMap& map, glm::vec3 dir);
+// Reference options that take exactly `samplesPerPixel` samples (no convergence test).
+[[nodiscard]] ReferenceOptions fixedSamples(int samplesPerPixel);
+
 // ../shared/data/hdri/<name>.exr (fails the test when it cannot be read; an empty map then).
 [[nodiscard]] EnvMap sharedHdri(const std::string& name);
 // A smooth sky (bright zenith, warm band near +X at 30 degrees elevation, dark ground).

@@ -83,9 +83,7 @@ SpotStudy spotsUnder(const std::string& mapName) {
   out.byTheLights = highFrequencyShare(
       renderWithLights(scene, camera, kSpotWidthPx, kSpotHeightPx,
                        shadingLightsFor(lights, geometry, true, 72), geometry, &cube));
-  ReferenceOptions referenceOptions;
-  referenceOptions.minSamples = 1024;
-  referenceOptions.maxSamples = 1024;
+  const ReferenceOptions referenceOptions = fixedSamples(1024);
   out.reference = highFrequencyShare(
       renderReference(scene, camera, kSpotWidthPx, kSpotHeightPx, map, referenceOptions).image);
   std::printf(

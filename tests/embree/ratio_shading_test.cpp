@@ -82,9 +82,7 @@ TEST(RatioShading, SunAtOneHundredThousandTimesTheSkyStaysFiniteAndNearTheRefere
   for (const scene::Material& sphere :
        {ggx(0.6F, glm::vec3(0.9F, 0.7F, 0.35F), 0.0F), ggx(0.02F, glm::vec3(0.9F), 0.0F)}) {
     const scene::Scene s = sphereScene(glm::vec3(0, 0.5F, 0), 0.5F, true, sphere, lambertian(0.5F));
-    ReferenceOptions referenceOptions;
-    referenceOptions.minSamples = 512;
-    referenceOptions.maxSamples = 512;
+    const ReferenceOptions referenceOptions = fixedSamples(512);
     const ReferenceResult reference =
         renderReference(built(s), camera, kWidthPx, kHeightPx, map, referenceOptions);
     const RatioRender ratio = renderByRatio(s, camera, map, 256);
@@ -110,9 +108,7 @@ TEST(RatioShading, RoughGgxUnderBroadLightIsWithinFourPerCentOfTheReference) {
       sphereScene(glm::vec3(0, 0.5F, 0), 0.5F, true,
                   ggx(std::sqrt(0.6F), glm::vec3(1.0F, 0.78F, 0.34F), 0.0F), lambertian(0.5F));
   const scene::OrbitCamera camera = cameraAt(glm::vec3(0, 0.5F, 0), 2.2F, 0.35F);
-  ReferenceOptions referenceOptions;
-  referenceOptions.minSamples = 1024;
-  referenceOptions.maxSamples = 1024;
+  const ReferenceOptions referenceOptions = fixedSamples(1024);
   const ReferenceResult reference =
       renderReference(built(s), camera, kWidthPx, kHeightPx, city, referenceOptions);
   const RatioRender ratio = renderByRatio(s, camera, city, 256);

@@ -91,6 +91,16 @@ render::ShadingLights withGlossy(render::ShadingLights lights, std::size_t highC
   return lights;
 }
 
+scene::OrbitCamera shadowCamera() {
+  scene::OrbitCamera camera;
+  camera.targetWorld = {0.0F, 0.0F, 0.0F};
+  camera.distance = 7.0F;
+  camera.azimuthRad = 3.14159265F;
+  camera.elevationRad = 1.1F;
+  camera.verticalFovRad = 0.8F;
+  return camera;
+}
+
 std::vector<Light> spreadLights(int count, glm::vec3 total) {
   std::vector<Light> out;
   const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));

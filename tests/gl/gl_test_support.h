@@ -54,6 +54,10 @@ struct SphereHit {
 std::optional<SphereHit> hitSphere(const scene::OrbitCamera& camera, int x, int y, int widthPx,
                                    int heightPx, glm::vec3 centre, float radius);
 
+// A camera looking down at the origin from 7 units, steeply (elevation 1.1 rad), from -Z: the
+// view of the shadow tests (a shadow on the ground plane around the origin).
+scene::OrbitCamera shadowCamera();
+
 // Image position (pixels, row 0 at the top) of a world point.
 glm::vec2 projectToPixel(const scene::OrbitCamera& camera, glm::vec3 pointWorld, int widthPx,
                          int heightPx);

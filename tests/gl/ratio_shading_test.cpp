@@ -85,7 +85,8 @@ TEST(GlRatioShading, UnshadowedGlossySphereMatchesTheCpuEnvironmentLighting) {
   const scene::Scene s = sphereScene(m, glm::vec3(0.0F), 1.0F);
   const EnvMap map = skyWithSun(1.0F);
   const CubeMap cube = cubeMapFromEnvMap(map, 64, 7);
-  const render::EnvironmentLighting environment = render::makeEnvironmentLighting(cube, s.materials);
+  const render::EnvironmentLighting environment =
+      render::makeEnvironmentLighting(cube, s.materials);
   const std::vector<Light> lights = lightsFrom(map, 64);
   const std::vector<float> peaks = render::peakFractionsOf(environment, cube, lights);
   ASSERT_GT(*std::max_element(peaks.begin(), peaks.end()), 0.5F);  // the sun is clipped
@@ -107,10 +108,9 @@ TEST(GlRatioShading, UnshadowedGlossySphereMatchesTheCpuEnvironmentLighting) {
         peak += render::specularBrdf(m, hit->normal, hit->toEye, lights[i].dir) * lights[i].rgb *
                 (c * peaks[i]);
       }
-      const glm::vec3 expected = render::unshadowedDiffuse(environment, m, hit->normal) +
-                                 render::unshadowedSpecular(environment, 0, m, hit->normal,
-                                                            hit->toEye) +
-                                 peak;
+      const glm::vec3 expected =
+          render::unshadowedDiffuse(environment, m, hit->normal) +
+          render::unshadowedSpecular(environment, 0, m, hit->normal, hit->toEye) + peak;
       const double e = double(frame.image.at(x, y).g - expected.g);
       errorSq += e * e;
       referenceSq += double(expected.g) * double(expected.g);
@@ -127,7 +127,8 @@ TEST(GlRatioShading, PlaneInOneLightsShadowTakesTheShadowedShareOfItsIrradiance)
   const scene::Scene s = sphereOverPlane();
   const EnvMap map = skyWithSun(1.0F);
   const CubeMap cube = cubeMapFromEnvMap(map, 64, 7);
-  const render::EnvironmentLighting environment = render::makeEnvironmentLighting(cube, s.materials);
+  const render::EnvironmentLighting environment =
+      render::makeEnvironmentLighting(cube, s.materials);
   // Four grey lights; the first, at 45 degrees, casts the sphere's shadow centred on (-1, 0, 0).
   std::vector<Light> lights(4);
   lights[0].dir = glm::normalize(glm::vec3(1.0F, 1.0F, 0.0F));
@@ -137,12 +138,7 @@ TEST(GlRatioShading, PlaneInOneLightsShadowTakesTheShadowedShareOfItsIrradiance)
   for (std::size_t i = 0; i < lights.size(); ++i) lights[i].rgb = glm::vec3(1.0F + float(i));
   lights[0].rgb = glm::vec3(6.0F);
   const render::ShadingLights shading = withAllCasting(plainLights(lights), 7);
-  scene::OrbitCamera camera;
-  camera.targetWorld = {0.0F, 0.0F, 0.0F};
-  camera.distance = 7.0F;
-  camera.azimuthRad = 3.14159265F;
-  camera.elevationRad = 1.1F;
-  camera.verticalFovRad = 0.8F;
+  const scene::OrbitCamera camera = shadowCamera();
   const RatioFrame frame = renderByRatio(s, camera, cube, environment, shading);
   ASSERT_TRUE(frame.finite);
   const glm::vec3 up(0.0F, 1.0F, 0.0F);
@@ -170,7 +166,8 @@ TEST(GlRatioShading, BlackMapRendersBlackWithoutNan) {
   s.meshes[0].material = 1;
   const EnvMap map = skyWithSun(0.0F);
   const CubeMap cube = cubeMapFromEnvMap(map, 64, 7);
-  const render::EnvironmentLighting environment = render::makeEnvironmentLighting(cube, s.materials);
+  const render::EnvironmentLighting environment =
+      render::makeEnvironmentLighting(cube, s.materials);
   std::vector<Light> lights = lightsFrom(skyWithSun(1.0F), 16);
   for (Light& l : lights) l.rgb = glm::vec3(0.0F);
   const scene::OrbitCamera camera = scene::framingCamera(scene::sceneBounds(s), 0.6F, 0.4F);

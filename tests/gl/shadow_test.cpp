@@ -18,16 +18,6 @@ constexpr int kH = 120;
 const glm::vec3 kSphereCentre(0.0F, 1.0F, 0.0F);
 constexpr float kSphereRadius = 0.5F;
 
-scene::OrbitCamera shadowCamera() {
-  scene::OrbitCamera camera;
-  camera.targetWorld = {0.0F, 0.0F, 0.0F};
-  camera.distance = 7.0F;
-  camera.azimuthRad = 3.14159265F;
-  camera.elevationRad = 1.1F;
-  camera.verticalFovRad = 0.8F;
-  return camera;
-}
-
 struct DarkRegion {
   glm::vec2 centroidPx{0.0F};
   int pixels = 0;
@@ -96,9 +86,10 @@ TEST(Shadows, MovingTheLightMovesTheDisc) {
   expectShadowAt(*renderer, {0.6F, 1.0F, 0.2F});
   expectShadowAt(*renderer, {0.2F, 1.0F, -0.7F});
   const scene::OrbitCamera camera = shadowCamera();
-  EXPECT_GT(glm::distance(predictedShadowCentre(glm::normalize(glm::vec3(0.6F, 1.0F, 0.2F)), camera),
-                          predictedShadowCentre(glm::normalize(glm::vec3(0.2F, 1.0F, -0.7F)), camera)),
-            15.0F);
+  EXPECT_GT(
+      glm::distance(predictedShadowCentre(glm::normalize(glm::vec3(0.6F, 1.0F, 0.2F)), camera),
+                    predictedShadowCentre(glm::normalize(glm::vec3(0.2F, 1.0F, -0.7F)), camera)),
+      15.0F);
 }
 
 TEST(Shadows, MapsAreReusedWhileTheLightsKeyIsUnchangedAndRedrawnWhenItChanges) {
@@ -134,7 +125,8 @@ TEST(Shadows, WithAFullAtlasOnlyTheCasterInSlot200Occludes) {
   lights[kSlot].dir = dir;
   lights[kSlot].rgb = glm::vec3(3.0F);
   const scene::OrbitCamera camera = shadowCamera();
-  const GlFrameStats stats = renderer->render(camera, withAllCasting(plainLights(lights), 42), nullptr);
+  const GlFrameStats stats =
+      renderer->render(camera, withAllCasting(plainLights(lights), 42), nullptr);
   EXPECT_EQ(stats.shadowMapsRendered, 256U);
   const float unshadowed = 0.8F / 3.14159265F * 3.0F * dir.y;
   const DarkRegion dark = darkRegionOnPlane(renderer->readLinear(), camera, unshadowed);
@@ -145,8 +137,8 @@ TEST(Shadows, WithAFullAtlasOnlyTheCasterInSlot200Occludes) {
 
 TEST(LightClip, BoundsFitTheLightViewAndDepthGrowsAwayFromTheLight) {
   scene::Bounds bounds{{-3.0F, 0.0F, -3.0F}, {3.0F, 1.5F, 3.0F}};
-  for (const glm::vec3 raw : {glm::vec3(0.6F, 1.0F, 0.2F), glm::vec3(0.0F, 1.0F, 0.0F),
-                              glm::vec3(-1.0F, 0.1F, 0.3F)}) {
+  for (const glm::vec3 raw :
+       {glm::vec3(0.6F, 1.0F, 0.2F), glm::vec3(0.0F, 1.0F, 0.0F), glm::vec3(-1.0F, 0.1F, 0.3F)}) {
     const glm::vec3 dir = glm::normalize(raw);
     const glm::mat4 clipFromWorld = lightClipFromWorld(dir, bounds);
     for (int corner = 0; corner < 8; ++corner) {

@@ -95,12 +95,7 @@ TEST(GoldenImage, OpenGlDefaultSceneUnderTheSunLooksAsItDid) {
 // close up; rendered with the maps' view spanning the whole scene, the contact came out as a dark
 // blurred halo (this picture then differs by more than the tolerance).
 TEST(GoldenImage, OpenGlSphereOnAPlaneUnderTheSunHasASharpContactShadow) {
-  RigOptions options = goldenRig();
-  options.sceneName = "spheres";
-  options.mapName = "sky";
-  options.widthPx = 320;
-  options.heightPx = 240;
-  RenderRig rig(options);
+  RenderRig rig(sphereOnAPlaneUnderTheSun());
   compareWithGolden(rig.gl(rig.lights(256, 256)), "spheres-sky-gl.png");
 }
 

@@ -24,6 +24,16 @@ T orDie(std::expected<T, std::string> value, const char* what) {
 
 }  // namespace
 
+RigOptions sphereOnAPlaneUnderTheSun() {
+  RigOptions options;
+  options.sceneName = "spheres";
+  options.mapName = "sky";
+  options.widthPx = 320;
+  options.heightPx = 240;
+  options.shadowMapPx = 256;
+  return options;
+}
+
 RenderRig::RenderRig(const RigOptions& options)
     : options_(options), geometry_(render::makeLightingGeometry()) {
   scene_ = scene::builtinScene(options.sceneName).value();

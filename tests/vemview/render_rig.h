@@ -30,6 +30,10 @@ struct RigOptions {
   std::size_t maxLights = 1024;
 };
 
+// The sphere standing on a plane ("spheres") under sky.exr's sun, 320 x 240, 256 px maps: the
+// contact-shadow rig of issue 20 part 3.
+[[nodiscard]] RigOptions sphereOnAPlaneUnderTheSun();
+
 class RenderRig {
  public:
   explicit RenderRig(const RigOptions& options);

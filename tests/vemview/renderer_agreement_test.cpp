@@ -63,13 +63,7 @@ TEST(RendererAgreement, LightsWithoutTheirOwnMapUseTheirGroupsMapsView) {
 constexpr double kContactRms = 0.013;       // 0.0082 now, 0.0213 with the whole scene's view
 constexpr double kContactOutliers = 0.006;  // 0.0030 now, 0.0116 before
 TEST(RendererAgreement, TheSunsShadowAtASpheresContactIsAsSharpAsRayTraced) {
-  RigOptions options;
-  options.sceneName = "spheres";
-  options.mapName = "sky";
-  options.widthPx = 320;
-  options.heightPx = 240;
-  options.shadowMapPx = 256;
-  RenderRig rig(options);
+  RenderRig rig(sphereOnAPlaneUnderTheSun());
   const render::ShadingLights lights = rig.lights(256, 256);
   const render::ImageError e = render::compareImages(rig.gl(lights), rig.embree(lights));
   std::printf(
