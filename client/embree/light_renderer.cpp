@@ -1,6 +1,10 @@
 #include "client/embree/light_renderer.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -23,6 +27,8 @@ struct Frame {
   const CubeMap* cube;
   LightRenderOptions options;
   std::vector<float> peakFractions;  // per diffuse light, with an environment (ratio shading)
+  // Per diffuse light, the cosine of its shadow rays' cone (shadowConeCosines); empty: hard shadows.
+  std::vector<float> coneCos;
 };
 
 bool visible(const Frame& frame, const ShadingPoint& p, glm::vec3 dir) {
@@ -79,9 +85,11 @@ glm::vec3 glossyLightsTerm(const Frame& frame, const ShadingPoint& p) {
   return sum;
 }
 
-// The cube map's reflection of a mirror-like material (unoccluded, as the GL renderer).
+// The cube map's reflection of a mirror-like material, 0 where the scene blocks the reflected ray
+// (direct light only, as the reference renderer).
 glm::vec3 mirrorTerm(const Frame& frame, const ShadingPoint& p) {
-  const glm::vec3 r = render::reflectedDirection(p.normal, p.wo);
+  const glm::vec3 r = glm::normalize(render::reflectedDirection(p.normal, p.wo));
+  if (!visible(frame, p, r)) return glm::vec3(0.0F);
   return render::mirrorReflectance(*p.material, p.normal, p.wo) *
          render::sampleCubeMap(*frame.cube, r);
 }
@@ -99,55 +107,131 @@ glm::vec3 ratioOf(glm::vec3 shadowed, glm::vec3 unshadowed) {
   return out;
 }
 
-glm::vec3 shadeByRatio(const Frame& frame, const ShadingPoint& p) {
+// The sums of a set of lights that the ratios divide: shadowed and unshadowed, diffuse and specular.
+struct LightSums {
+  glm::vec3 unshadowedD{0.0F};
+  glm::vec3 shadowedD{0.0F};
+  glm::vec3 unshadowedS{0.0F};
+  glm::vec3 shadowedS{0.0F};
+
+  void add(const LightSums& o, float weight) {
+    unshadowedD += weight * o.unshadowedD;
+    shadowedD += weight * o.shadowedD;
+    unshadowedS += weight * o.unshadowedS;
+    shadowedS += weight * o.shadowedS;
+  }
+};
+
+// One pixel's sums: of the hard lights (shadow rays toward the light) and of the soft ones
+// (shadow rays jittered over the light's cone, then filtered over neighbouring pixels).
+struct RatioSums {
+  LightSums hard;
+  LightSums soft;
+  glm::vec3 peakS{0.0F};  // the clipped peaks' specular light, exact per light
+  float specularBlend = 0.0F;  // t: ratio_s = mix(ratio_d, S_s / U_s, t)
+};
+
+// A light whose cone is under this solid angle casts hard shadows (a sun, a lamp).
+constexpr float kSoftShadowMinSr = 0.01F;
+constexpr float kSoftShadowMaxCos = 1.0F - kSoftShadowMinSr / (2.0F * std::numbers::pi_v<float>);
+
+std::uint32_t hash32(std::uint32_t x) {
+  x ^= x >> 16U;
+  x *= 0x7feb352dU;
+  x ^= x >> 15U;
+  x *= 0x846ca68bU;
+  x ^= x >> 16U;
+  return x;
+}
+
+// A direction in the cone of half-angle acos(coneCos) around dir, uniform in solid angle, from the
+// hash of (pixel, light): a fixed pattern, so a frame does not depend on the schedule.
+glm::vec3 directionInCone(glm::vec3 dir, float coneCos, std::uint32_t pixel, std::uint32_t light) {
+  if (coneCos >= 1.0F) return dir;
+  const std::uint32_t h1 = hash32(pixel * 0x9e3779b1U ^ hash32(light + 0x68e31da4U));
+  const std::uint32_t h2 = hash32(h1 ^ 0xb5297a4dU);
+  const float u1 = float(h1 >> 8U) * (1.0F / 16777216.0F);
+  const float u2 = float(h2 >> 8U) * (1.0F / 16777216.0F);
+  const float c = 1.0F - u1 * (1.0F - coneCos);
+  const float sine = std::sqrt(std::max(0.0F, 1.0F - c * c));
+  const float phi = 2.0F * std::numbers::pi_v<float> * u2;
+  const glm::vec3 t = glm::normalize(glm::cross(
+      dir, std::abs(dir.x) > 0.5F ? glm::vec3(0.0F, 1.0F, 0.0F) : glm::vec3(1.0F, 0.0F, 0.0F)));
+  const glm::vec3 b = glm::cross(dir, t);
+  return glm::normalize(c * dir + sine * (std::cos(phi) * t + std::sin(phi) * b));
+}
+
+bool specularByRatio(const Frame& frame, const ShadingPoint& p) {
   const render::EnvironmentLighting& env = *frame.options.environment;
-  const scene::Material& m = *p.material;
   const std::size_t materialIndex = p.hit.materialIndex;
-  const bool specularByRatio = m.glossy() && !m.mirrorLike() &&
-                               materialIndex < env.specular.size() &&
-                               env.specular[materialIndex].has_value();
-  glm::vec3 unshadowedD(0.0F);
-  glm::vec3 shadowedD(0.0F);
-  glm::vec3 unshadowedS(0.0F);
-  glm::vec3 shadowedS(0.0F);
-  glm::vec3 peakS(0.0F);  // the clipped peaks' specular light, exact per light
+  return p.material->glossy() && !p.material->mirrorLike() && materialIndex < env.specular.size() &&
+         env.specular[materialIndex].has_value();
+}
+
+RatioSums ratioSumsOf(const Frame& frame, const ShadingPoint& p, std::uint32_t pixel) {
+  const scene::Material& m = *p.material;
+  const bool bySpecular = specularByRatio(frame, p);
+  RatioSums out;
   double sumY = 0.0;
   double sumY2 = 0.0;
-  for (const std::uint32_t i : diffuseCandidates(frame, p.normal)) {
+  // No shadow rays where no light term is used (a mirror without a diffuse part).
+  const bool lightsUsed =
+      bySpecular || std::max({m.diffuseAlbedo.x, m.diffuseAlbedo.y, m.diffuseAlbedo.z}) > 0.0F;
+  for (const std::uint32_t i :
+       lightsUsed ? diffuseCandidates(frame, p.normal) : std::vector<std::uint32_t>{}) {
     const Light& light = frame.lights.diffuse.lights[i];
     const float cosine = glm::dot(p.normal, light.dir);
     if (cosine <= 0.0F) continue;
-    const float v = visible(frame, p, light.dir) ? 1.0F : 0.0F;
+    const bool soft = !frame.coneCos.empty() && frame.coneCos[i] < kSoftShadowMaxCos;
+    const glm::vec3 shadowDir =
+        soft ? directionInCone(light.dir, frame.coneCos[i], pixel, i) : light.dir;
+    const float v = visible(frame, p, shadowDir) ? 1.0F : 0.0F;
+    LightSums& sums = soft ? out.soft : out.hard;
     const glm::vec3 wd = light.rgb * cosine;
-    unshadowedD += wd;
-    shadowedD += v * wd;
-    if (specularByRatio) {
+    sums.unshadowedD += wd;
+    sums.shadowedD += v * wd;
+    if (bySpecular) {
       const glm::vec3 full = render::specularBrdf(m, p.normal, p.wo, light.dir) * wd;
       const float peak = frame.peakFractions.empty() ? 0.0F : frame.peakFractions[i];
-      peakS += (v * peak) * full;
+      out.peakS += (v * peak) * full;
       const glm::vec3 ws = (1.0F - peak) * full;
-      unshadowedS += ws;
-      shadowedS += v * ws;
+      sums.unshadowedS += ws;
+      sums.shadowedS += v * ws;
       const double y = luminance(ws);
       sumY += y;
       sumY2 += y * y;
     }
   }
-  const glm::vec3 ratioD = ratioOf(shadowedD, unshadowedD);
+  const double effective = sumY2 > 0.0 ? sumY * sumY / sumY2 : 0.0;
+  out.specularBlend = float(std::clamp(effective / frame.options.minEffectiveLights, 0.0, 1.0));
+  return out;
+}
+
+glm::vec3 composeByRatio(const Frame& frame, const ShadingPoint& p, const RatioSums& sums) {
+  const render::EnvironmentLighting& env = *frame.options.environment;
+  const scene::Material& m = *p.material;
+  LightSums all = sums.hard;
+  all.add(sums.soft, 1.0F);
+  const glm::vec3 ratioD = ratioOf(all.shadowedD, all.unshadowedD);
   glm::vec3 radiance = render::unshadowedDiffuse(env, m, p.normal) * ratioD;
-  if (specularByRatio) {
-    const double effective = sumY2 > 0.0 ? sumY * sumY / sumY2 : 0.0;
-    const auto t = float(std::clamp(effective / frame.options.minEffectiveLights, 0.0, 1.0));
-    const glm::vec3 ratioS = glm::mix(ratioD, ratioOf(shadowedS, unshadowedS), t);
-    radiance += render::unshadowedSpecular(env, materialIndex, m, p.normal, p.wo) * ratioS + peakS;
+  if (specularByRatio(frame, p)) {
+    const glm::vec3 ratioS =
+        glm::mix(ratioD, ratioOf(all.shadowedS, all.unshadowedS), sums.specularBlend);
+    radiance += render::unshadowedSpecular(env, p.hit.materialIndex, m, p.normal, p.wo) * ratioS +
+                sums.peakS;
   } else if (m.mirrorLike() && frame.cube != nullptr) {
     radiance += mirrorTerm(frame, p);
   }
   return radiance;
 }
 
+glm::vec3 backgroundOf(const Frame& frame, const scene::Ray& ray) {
+  return frame.cube != nullptr
+             ? render::sampleBackground(*frame.cube, frame.options.cubeCoverage, ray.dirWorld)
+             : glm::vec3(0.0F);
+}
+
 glm::vec3 shade(const Frame& frame, const ShadingPoint& p) {
-  if (frame.options.environment != nullptr) return shadeByRatio(frame, p);
   const scene::Material& m = *p.material;
   if (m.mirrorLike() && frame.cube != nullptr) {
     return diffuseLightsTerm(frame, p, false) + mirrorTerm(frame, p);
@@ -164,15 +248,94 @@ void renderRow(const Frame& frame, const scene::OrbitCamera& camera, int row,
     const scene::Ray ray =
         camera.primaryRay(float(x) + 0.5F, float(row) + 0.5F, image.widthPx, image.heightPx);
     if (const std::optional<ShadingPoint> p = shadingPointOf(frame.scene, ray)) {
-      image.set(x, row, shade(frame, *p), true);
+      const glm::vec3 radiance =
+          frame.options.environment != nullptr
+              ? composeByRatio(frame, *p,
+                               ratioSumsOf(frame, *p, std::uint32_t(row * image.widthPx + x)))
+              : shade(frame, *p);
+      image.set(x, row, radiance, true);
     } else {
-      const glm::vec3 background =
-          frame.cube != nullptr
-              ? render::sampleBackground(*frame.cube, frame.options.cubeCoverage, ray.dirWorld)
-              : glm::vec3(0.0F);
-      image.set(x, row, background, false);
+      image.set(x, row, backgroundOf(frame, ray), false);
     }
   }
+}
+
+// Soft shadows: one pixel's shading point and sums, before the filter.
+struct PixelRecord {
+  std::optional<ShadingPoint> point;
+  RatioSums sums;
+};
+
+void recordRow(const Frame& frame, const scene::OrbitCamera& camera, int row,
+               std::vector<PixelRecord>& records, render::LinearImage& image) {
+  for (int x = 0; x < image.widthPx; ++x) {
+    const scene::Ray ray =
+        camera.primaryRay(float(x) + 0.5F, float(row) + 0.5F, image.widthPx, image.heightPx);
+    PixelRecord& record = records[std::size_t(row * image.widthPx + x)];
+    record.point = shadingPointOf(frame.scene, ray);
+    if (record.point) {
+      record.sums = ratioSumsOf(frame, *record.point, std::uint32_t(row * image.widthPx + x));
+    } else {
+      image.set(x, row, backgroundOf(frame, ray), false);
+    }
+  }
+}
+
+// The pixel's shadowed and unshadowed sums averaged over its neighbours within the filter radius
+// that see the same material at about the same depth and normal (a cross-bilateral filter of
+// numerator and denominator apart, so the ratio is one of averages).
+RatioSums filteredSums(const Frame& frame, const std::vector<PixelRecord>& records, int x, int y,
+                       int widthPx, int heightPx) {
+  const PixelRecord& centre = records[std::size_t(y * widthPx + x)];
+  const ShadingPoint& c = *centre.point;
+  const int radius = frame.options.softShadowFilterPx;
+  const float sigmaPx = std::max(1.0F, 0.5F * float(radius));
+  RatioSums out = centre.sums;
+  out.soft = LightSums{};
+  float weightSum = 0.0F;
+  for (int dy = -radius; dy <= radius; ++dy) {
+    const int ny = y + dy;
+    if (ny < 0 || ny >= heightPx) continue;
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const int nx = x + dx;
+      if (nx < 0 || nx >= widthPx) continue;
+      const PixelRecord& n = records[std::size_t(ny * widthPx + nx)];
+      if (!n.point || n.point->hit.materialIndex != c.hit.materialIndex) continue;
+      const float cosine = glm::dot(n.point->normal, c.normal);
+      if (cosine < 0.8F) continue;  // another face or a sharp bend
+      const float depthOff =
+          std::abs(n.point->hit.distance - c.hit.distance) / (0.02F * c.hit.distance);
+      const float c2 = cosine * cosine;
+      const float c4 = c2 * c2;
+      const float c16 = c4 * c4 * c4 * c4;
+      const float w = std::exp(-float(dx * dx + dy * dy) / (2.0F * sigmaPx * sigmaPx) -
+                               depthOff * depthOff) *
+                      c16;
+      out.soft.add(n.sums.soft, w);
+      weightSum += w;
+    }
+  }
+  // The centre's own weight is 1, so weightSum >= 1.
+  LightSums mean;
+  mean.add(out.soft, 1.0F / weightSum);
+  out.soft = mean;
+  return out;
+}
+
+// Per diffuse light, the cosine of the cone its shadow rays spread over: the solid angle the
+// light stands for, its irradiance over the cube map's radiance in its direction (a sun: a texel;
+// a broad sky light: its share of the sphere), at most kMaxShadowConeSr.
+constexpr float kMaxShadowConeSr = 1.0F;
+std::vector<float> shadowConeCosines(const std::vector<Light>& lights, const CubeMap& cube) {
+  std::vector<float> out(lights.size(), 1.0F);
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    const double radiance = luminance(render::sampleCubeMap(cube, lights[i].dir));
+    const double irradiance = luminance(lights[i].rgb);
+    if (radiance <= 0.0 || !std::isfinite(radiance) || !std::isfinite(irradiance)) continue;
+    const auto solidAngleSr = float(std::min(double(kMaxShadowConeSr), irradiance / radiance));
+    out[i] = 1.0F - solidAngleSr / (2.0F * std::numbers::pi_v<float>);
+  }
+  return out;
 }
 
 }  // namespace
@@ -182,12 +345,29 @@ render::LinearImage renderWithLights(const EmbreeScene& scene, const scene::Orbi
                                      const render::LightingGeometry& geometry, const CubeMap* cube,
                                      const LightRenderOptions& options) {
   render::LinearImage image = render::LinearImage::black(widthPx, heightPx);
-  Frame frame{scene, lights, geometry, cube, options, {}};
-  if (options.environment != nullptr && cube != nullptr) {
+  Frame frame{scene, lights, geometry, cube, options, {}, {}};
+  const bool byRatio = options.environment != nullptr;
+  if (byRatio && cube != nullptr) {
     frame.peakFractions =
         render::peakFractionsOf(*options.environment, *cube, lights.diffuse.lights);
   }
-  forEachRow(heightPx, options.threadCount, [&](int row) { renderRow(frame, camera, row, image); });
+  if (!byRatio || !options.softShadows || cube == nullptr) {
+    forEachRow(heightPx, options.threadCount,
+               [&](int row) { renderRow(frame, camera, row, image); });
+    return image;
+  }
+  frame.coneCos = shadowConeCosines(lights.diffuse.lights, *cube);
+  std::vector<PixelRecord> records(std::size_t(widthPx) * std::size_t(heightPx));
+  forEachRow(heightPx, options.threadCount,
+             [&](int row) { recordRow(frame, camera, row, records, image); });
+  forEachRow(heightPx, options.threadCount, [&](int row) {
+    for (int x = 0; x < widthPx; ++x) {
+      const PixelRecord& record = records[std::size_t(row * widthPx + x)];
+      if (!record.point) continue;
+      const RatioSums sums = filteredSums(frame, records, x, row, widthPx, heightPx);
+      image.set(x, row, composeByRatio(frame, *record.point, sums), true);
+    }
+  });
   return image;
 }
 

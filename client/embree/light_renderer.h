@@ -13,7 +13,10 @@
 //         ShadingLights::maxConeLights cone lights), each
 //           specularBrdf(dir_k) low.rgb_k weight_k max(0, n . dir_k) V_k;
 //       + for mirror-like materials when a cube map is given, instead of the specular lights:
-//           mirrorReflectance(n, wo) sampleCubeMap(cube, R)   (unoccluded, as the GL renderer).
+//           mirrorReflectance(n, wo) sampleCubeMap(cube, R) V_R, V_R the occlusion of the
+//           reflected ray (0 where the scene blocks it: direct light only, as the Monte Carlo
+//           reference; the GL renderer's reflection is not occluded). A mirror without a diffuse
+//           part traces no light rays.
 // With LightRenderOptions::environment set, shading by ratio instead (issue 20; Heitz et al. 2018,
 // "Combining analytic direct illumination and stochastic shadows"): the unshadowed light comes
 // from the prefiltered environment (render/environment_lighting.h), the lights give only the
@@ -53,6 +56,9 @@ struct LightRenderOptions {
   // Shading by ratio (above) when set; borrowed, built for this scene's materials.
   const render::EnvironmentLighting* environment = nullptr;
   double minEffectiveLights = render::kMinEffectiveLights;
+  // Shading by ratio only: soft shadows (above).
+  bool softShadows = false;
+  int softShadowFilterPx = 4;  // >= 0
 };
 
 // widthPx, heightPx >= 1. `cube` may be null (black background, mirrors lit by the lights).

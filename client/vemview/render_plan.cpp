@@ -50,6 +50,7 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
   plan.lighting.clusterBudget = request.inputClustered ? 0 : request.clusterBudget;
   plan.lighting.clusterLayout = request.inputLayout;
   plan.shadowMapPx = request.shadowMapPx;
+  plan.cubeFacePx = request.cubeFacePx;
   plan.cubeMapCoverage = request.inputLayout;
   plan.targetFrameMs = request.targetFrameMs;
   return plan;
@@ -78,7 +79,7 @@ std::string RenderPlan::describe() const {
   text += glossyPass
               ? fmt::format(", glossy L/H pass (|H| {}; {})", lighting.highCount, glossyReason)
               : fmt::format(", no glossy pass ({})", glossyReason);
-  text += cubeMap ? fmt::format(", cube map ({})", cubeMapReason)
+  text += cubeMap ? fmt::format(", cube map of {} px ({})", cubeFacePx, cubeMapReason)
                   : fmt::format(", no cube map ({})", cubeMapReason);
   if (shadingByRatio) {
     text += fmt::format(", shading by ratio ({}, {})",

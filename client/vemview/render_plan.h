@@ -31,6 +31,7 @@ struct PlanRequest {
   std::size_t lightCount = 256;    // N asked for
   std::size_t shadowedCount = 64;  // S asked for
   int shadowMapPx = 256;
+  int cubeFacePx = 128;  // the cube map's level 0 (--cube-face-px)
   bool regions = true;
   int clusterBudget = 0;                // Q, 0: off
   bool backgroundWanted = false;        // --background
@@ -47,6 +48,7 @@ struct RenderPlan {
   bool shadowMaps = false;
   render::LightingOptions lighting;  // N, S (0 without shadow maps), regions, glossy, Q
   int shadowMapPx = 256;
+  int cubeFacePx = 128;
   std::optional<double> targetFrameMs;
   std::string glossyReason;  // why, in a few words
   std::string cubeMapReason;

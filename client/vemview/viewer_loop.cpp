@@ -33,14 +33,16 @@ double msSince(Clock::time_point start) {
 std::expected<std::unique_ptr<LightInput>, std::string> openInput(const ViewerOptions& o,
                                                                   bool cubeMap) {
   if (!o.connectUrl.empty()) {
-    return openStreamInput(StreamInputOptions{o.connectUrl, o.token, cubeMap, 2.0, 128});
+    return openStreamInput(StreamInputOptions{o.connectUrl, o.token, cubeMap, 2.0,
+                                              std::uint32_t(o.cubeFacePx)});
   }
   if (!o.lightFile.empty()) {
     return openLightFileInput(o.lightFile);
   }
   const std::string map = o.mapFile.empty() ? defaultMapPath() : o.mapFile;
   return openMapInput(map,
-                      MapInputOptions{std::max<std::size_t>(o.lightCount, 1024), cubeMap, 128});
+                      MapInputOptions{std::max<std::size_t>(o.lightCount, 1024), cubeMap,
+                                      o.cubeFacePx});
 }
 
 PlanRequest requestFor(const ViewerOptions& o, const InputFacts& facts) {
@@ -48,6 +50,7 @@ PlanRequest requestFor(const ViewerOptions& o, const InputFacts& facts) {
   request.lightCount = o.lightCount;
   request.shadowedCount = o.shadowedCount;
   request.shadowMapPx = o.shadowMapPx;
+  request.cubeFacePx = o.cubeFacePx;
   request.regions = o.regions;
   request.shadingByRatio = o.shading == ShadingKind::Ratio;
   request.clusterBudget = o.clusterBudget;

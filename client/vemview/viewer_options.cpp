@@ -97,6 +97,11 @@ void addLightingOptions(CLI::App& app, ViewerOptions& o) {
   app.add_option("--shadow-map-px", o.shadowMapPx, "Resolution of one shadow map")
       ->check(CLI::Range(16, 4096))
       ->capture_default_str();
+  app.add_option("--cube-face-px", o.cubeFacePx,
+                 "The cube map's face size: a mirror's reflection is this sharp (the stream "
+                 "serves 8 to 512)")
+      ->check(CLI::Range(8, 512))
+      ->capture_default_str();
   choiceOf<bool>(app.add_option("--regions", o.regions, "Angular-region light culling"),
                  {{"on", true}, {"off", false}})
       ->default_str(o.regions ? "on" : "off");

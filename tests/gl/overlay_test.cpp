@@ -20,7 +20,7 @@ namespace {
 const std::string kStatus =
     "frame 20 | 29.5 frames/s | drawn 20 (31.2 ms last) | lights 256 | shadowed 64\n"
     "lights 256, shadow maps 64 at 256 px, regions on, glossy L/H pass (|H| 72; a material is "
-    "glossy), cube map (glossy reflections)";
+    "glossy), cube map of 128 px (glossy reflections)";
 
 std::vector<std::string> words(const std::string& text) {
   std::istringstream in(text);

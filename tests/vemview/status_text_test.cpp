@@ -75,7 +75,7 @@ scene::Scene sphereOnPlane() {
 }
 
 // Every status line ended with the whole plan ("... | lights 256, shadow maps 64 at 256 px, regions
-// on, glossy L/H pass (...), cube map (...)").
+// on, glossy L/H pass (...), cube map of 128 px (...)").
 TEST(StatusLine, PlanIsPrintedOnceNotOnEveryStatusLine) {
   Printed printed;
   const auto t0 = StatusLine::Clock::time_point{};

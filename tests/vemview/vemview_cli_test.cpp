@@ -123,7 +123,33 @@ TEST_F(VemviewCli, GlossySceneGetsTheLHPassAndTheCubeMap) {
   const CommandRun r = run(kSmall + "--scene default --out " + path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("glossy L/H pass"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("cube map ("), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cube map of 128 px ("), std::string::npos) << r.err;
+}
+
+// --cube-face-px reached the plan line but not the map input (which built 128 px cube maps
+// whatever was asked): the background, level 0 of the cube map, is the same at 8 px and at 256.
+TEST_F(VemviewCli, CubeFaceSizeReachesTheCubeMapNotOnlyThePlanLine) {
+  std::vector<vem::render::LinearImage> images;
+  for (const int facePx : {8, 256}) {
+    const std::string out = path("out" + std::to_string(facePx));
+    const CommandRun r = run(kSmall + "--scene default --background --no-png --cube-face-px " +
+                             std::to_string(facePx) + " --out " + out);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("cube map of " + std::to_string(facePx) + " px ("), std::string::npos)
+        << r.err;
+    auto exr = vem::render::loadLinearExr(fs::path(out) / "frame-000000.exr");
+    ASSERT_TRUE(exr.has_value()) << exr.error();
+    images.push_back(std::move(*exr));
+  }
+  double differenceSum = 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < images[0].rgb.size(); ++i) {
+    differenceSum += std::abs(double(images[0].rgb[i]) - double(images[1].rgb[i]));
+    sum += std::abs(double(images[1].rgb[i]));
+  }
+  ASSERT_GT(sum, 0.0);
+  EXPECT_GT(differenceSum / sum, 0.01);  // an 8 px sky is a blur of the 256 px one
+  expectRefused(kSmall + "--cube-face-px 1024", "--cube-face-px", 2);
 }
 
 TEST_F(VemviewCli, RatioShadingPrefiltersOnceAndSaysSoInThePlan) {

@@ -11,12 +11,14 @@ namespace {
 class EmbreeStudyRenderer final : public StudyRenderer {
  public:
   EmbreeStudyRenderer(const embree::EmbreeScene& embreeScene, const StudyScene& scene,
-                      const render::LightingGeometry& geometry, StudyImageSize size, int frames)
+                      const render::LightingGeometry& geometry, StudyImageSize size, int frames,
+                      bool softShadows)
       : embreeScene_(embreeScene),
         scene_(scene),
         geometry_(geometry),
         size_(size),
-        frames_(std::max(frames, 1)) {}
+        frames_(std::max(frames, 1)),
+        softShadows_(softShadows) {}
 
   std::expected<TimedFrame, std::string> render(
       const StudyConfig& /*config*/, const StudyMap& map, const render::ShadingLights& lights,
@@ -24,6 +26,7 @@ class EmbreeStudyRenderer final : public StudyRenderer {
     TimedFrame out;
     embree::LightRenderOptions options;
     options.environment = environment;
+    options.softShadows = softShadows_;
     for (int frame = 0; frame < frames_; ++frame) {
       const auto start = std::chrono::steady_clock::now();
       out.image = embree::renderWithLights(embreeScene_, scene_.camera, size_.widthPx,
@@ -42,6 +45,7 @@ class EmbreeStudyRenderer final : public StudyRenderer {
   const render::LightingGeometry& geometry_;
   StudyImageSize size_;
   int frames_;
+  bool softShadows_;
 };
 
 }  // namespace
@@ -56,8 +60,10 @@ double medianOf(std::vector<double> values) {
 std::unique_ptr<StudyRenderer> makeEmbreeStudyRenderer(const embree::EmbreeScene& embreeScene,
                                                        const StudyScene& scene,
                                                        const render::LightingGeometry& geometry,
-                                                       StudyImageSize size, int frames) {
-  return std::make_unique<EmbreeStudyRenderer>(embreeScene, scene, geometry, size, frames);
+                                                       StudyImageSize size, int frames,
+                                                       bool softShadows) {
+  return std::make_unique<EmbreeStudyRenderer>(embreeScene, scene, geometry, size, frames,
+                                               softShadows);
 }
 
 }  // namespace vem::bench

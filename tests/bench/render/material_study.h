@@ -31,6 +31,8 @@ struct MaterialStudyOptions {
   bool gl = true;     // also the OpenGL renderer (headless)
   int glFrames = 3;   // timed OpenGL frames per point (the median is reported)
   std::size_t glShadowMaps = 256;  // OpenGL: min(N, this) shadow maps, shared by group below N
+  int cubeFacePx = kStudyCubeFacePx;  // the cube map both renderers read (level 0)
+  bool softShadows = false;  // Embree by ratio: embree::LightRenderOptions::softShadows
   std::vector<std::string> materials;  // names of materialStudyMaterials(); empty: all
   std::string command;                 // for the report
   // When set: per material, map, N and renderer, a PNG of the reference, the lights' and the

@@ -48,6 +48,8 @@ struct BenchOptions {
   std::vector<std::string> materialNames;
   std::vector<std::size_t> counts;  // --materials: the light counts N (empty: the study's)
   std::size_t glShadowMaps = 256;   // --materials: OpenGL's shadow maps S = min(N, this)
+  int cubeFacePx = kStudyCubeFacePx;  // --materials: the cube maps' level 0
+  bool softShadows = false;           // --materials: Embree by ratio with soft shadows
   std::string dumpDir;
   std::string sweeps = "abcde";
   std::string table;
@@ -104,6 +106,13 @@ int parse(int argc, char** argv, BenchOptions& o) {
   app.add_option("--gl-shadow-maps", o.glShadowMaps,
                  "with --materials: OpenGL's shadow maps, min(N, this), shared by group below N")
       ->check(CLI::Range(std::size_t(1), vem::render::kMaxShadowMaps));
+  app.add_option("--cube-face-px", o.cubeFacePx,
+                 "with --materials: the cube maps' face size, as vemview --cube-face-px")
+      ->check(CLI::Range(8, 512))
+      ->capture_default_str();
+  app.add_flag("--soft-shadows", o.softShadows,
+               "with --materials: Embree by ratio casts each light's cone's soft shadow "
+               "(embree::LightRenderOptions::softShadows)");
   app.add_flag("--list-maps", o.listMaps, "print how concentrated each HDRI's light is, and exit");
   app.add_option("--sweeps", o.sweeps, "the sweeps to run, e.g. ad (study_sweeps.h)");
   app.add_option("--table", o.table, "write the study (markdown) to this file");
@@ -258,6 +267,8 @@ int main(int argc, char** argv) {
     study.gl = !options.noGl;
     study.glFrames = options.glFrames;
     study.glShadowMaps = options.glShadowMaps;
+    study.cubeFacePx = options.cubeFacePx;
+    study.softShadows = options.softShadows;
     study.plotPrefix = options.plot;
     if (!options.counts.empty()) study.counts = options.counts;
     study.command = commandLine(argc, argv);

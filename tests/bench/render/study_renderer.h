@@ -48,10 +48,12 @@ struct StudyImageSize {
   int heightPx = 240;
 };
 
-// `embreeScene` and `geometry` are borrowed and must outlive the renderer.
+// `embreeScene` and `geometry` are borrowed and must outlive the renderer. softShadows: by ratio,
+// embree::LightRenderOptions::softShadows.
 [[nodiscard]] std::unique_ptr<StudyRenderer> makeEmbreeStudyRenderer(
     const embree::EmbreeScene& embreeScene, const StudyScene& scene,
-    const render::LightingGeometry& geometry, StudyImageSize size, int frames);
+    const render::LightingGeometry& geometry, StudyImageSize size, int frames,
+    bool softShadows = false);
 
 struct GlStudyRenderer {
   std::unique_ptr<StudyRenderer> renderer;

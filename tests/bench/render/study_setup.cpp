@@ -16,7 +16,6 @@
 namespace vem::bench {
 namespace {
 
-constexpr int kCubeFacePx = 128;  // vemview's cube maps from map files
 constexpr int kCubeLevels = 8;
 constexpr double kTopFraction = 1e-3;
 
@@ -115,7 +114,8 @@ MapCharacter characterOf(const EnvMap& map) {
   return describeDynamicRange(buildSamplingTables(map));
 }
 
-std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& path) {
+std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& path,
+                                                  int cubeFacePx) {
   auto map = mapio::loadMap(path);
   if (!map) return std::unexpected(map.error().message);
   if (map->layout != MapLayout::Sphere) {
@@ -131,7 +131,7 @@ std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& p
   out.lights =
       generateLights(tables, defaultSamplingPattern(map->layout).first(kStudyMaxLights),
                      SamplerKind::Havran);
-  out.cube = cubeMapFromEnvMap(*map, kCubeFacePx, kCubeLevels);
+  out.cube = cubeMapFromEnvMap(*map, cubeFacePx, kCubeLevels);
   out.map = std::move(*map);
   return out;
 }

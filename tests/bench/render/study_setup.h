@@ -48,7 +48,10 @@ struct StudyMap {
 // the means over the maps.
 [[nodiscard]] std::optional<std::string> knownDamage(const std::string& mapName);
 
-[[nodiscard]] std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& path);
+// cubeFacePx: the cube map's level 0, as vemview --cube-face-px (128 by default).
+inline constexpr int kStudyCubeFacePx = 128;
+[[nodiscard]] std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& path,
+                                                                int cubeFacePx = kStudyCubeFacePx);
 
 struct StudyScene {
   scene::Scene scene;
