@@ -14,6 +14,7 @@
 #include "client/embree/shading_point.h"
 #include "client/render/cube_map_sampling.h"
 #include "client/render/shading_model.h"
+#include "client/render/soft_shadows.h"
 #include "core/color.h"
 #include "core/glossy_light_sets.h"
 
@@ -27,7 +28,8 @@ struct Frame {
   const CubeMap* cube;
   LightRenderOptions options;
   std::vector<float> peakFractions;  // per diffuse light, with an environment (ratio shading)
-  // Per diffuse light, the cosine of its shadow rays' cone (shadowConeCosines); empty: hard shadows.
+  // Per diffuse light, the cosine of its shadow rays' cone (render/soft_shadows.h; 1: a hard
+  // shadow); empty: hard shadows.
   std::vector<float> coneCos;
 };
 
@@ -131,9 +133,7 @@ struct RatioSums {
   float specularBlend = 0.0F;  // t: ratio_s = mix(ratio_d, S_s / U_s, t)
 };
 
-// A light whose cone is under this solid angle casts hard shadows (a sun, a lamp).
-constexpr float kSoftShadowMinSr = 0.01F;
-constexpr float kSoftShadowMaxCos = 1.0F - kSoftShadowMinSr / (2.0F * std::numbers::pi_v<float>);
+
 
 std::uint32_t hash32(std::uint32_t x) {
   x ^= x >> 16U;
@@ -182,7 +182,7 @@ RatioSums ratioSumsOf(const Frame& frame, const ShadingPoint& p, std::uint32_t p
     const Light& light = frame.lights.diffuse.lights[i];
     const float cosine = glm::dot(p.normal, light.dir);
     if (cosine <= 0.0F) continue;
-    const bool soft = !frame.coneCos.empty() && frame.coneCos[i] < kSoftShadowMaxCos;
+    const bool soft = !frame.coneCos.empty() && frame.coneCos[i] < 1.0F;
     const glm::vec3 shadowDir =
         soft ? directionInCone(light.dir, frame.coneCos[i], pixel, i) : light.dir;
     const float v = visible(frame, p, shadowDir) ? 1.0F : 0.0F;
@@ -322,22 +322,6 @@ RatioSums filteredSums(const Frame& frame, const std::vector<PixelRecord>& recor
   return out;
 }
 
-// Per diffuse light, the cosine of the cone its shadow rays spread over: the solid angle the
-// light stands for, its irradiance over the cube map's radiance in its direction (a sun: a texel;
-// a broad sky light: its share of the sphere), at most kMaxShadowConeSr.
-constexpr float kMaxShadowConeSr = 1.0F;
-std::vector<float> shadowConeCosines(const std::vector<Light>& lights, const CubeMap& cube) {
-  std::vector<float> out(lights.size(), 1.0F);
-  for (std::size_t i = 0; i < lights.size(); ++i) {
-    const double radiance = luminance(render::sampleCubeMap(cube, lights[i].dir));
-    const double irradiance = luminance(lights[i].rgb);
-    if (radiance <= 0.0 || !std::isfinite(radiance) || !std::isfinite(irradiance)) continue;
-    const auto solidAngleSr = float(std::min(double(kMaxShadowConeSr), irradiance / radiance));
-    out[i] = 1.0F - solidAngleSr / (2.0F * std::numbers::pi_v<float>);
-  }
-  return out;
-}
-
 }  // namespace
 
 render::LinearImage renderWithLights(const EmbreeScene& scene, const scene::OrbitCamera& camera,
@@ -356,7 +340,8 @@ render::LinearImage renderWithLights(const EmbreeScene& scene, const scene::Orbi
                [&](int row) { renderRow(frame, camera, row, image); });
     return image;
   }
-  frame.coneCos = shadowConeCosines(lights.diffuse.lights, *cube);
+  frame.coneCos = render::shadowConeSolidAnglesSr(lights.diffuse.lights, *cube);
+  for (float& c : frame.coneCos) c = render::coneCosineOf(c);
   std::vector<PixelRecord> records(std::size_t(widthPx) * std::size_t(heightPx));
   forEachRow(heightPx, options.threadCount,
              [&](int row) { recordRow(frame, camera, row, records, image); });

@@ -50,7 +50,7 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
   plan.lighting.clusterBudget = request.inputClustered ? 0 : request.clusterBudget;
   plan.lighting.clusterLayout = request.inputLayout;
   plan.shadowMapPx = request.shadowMapPx;
-  plan.cubeFacePx = request.cubeFacePx;
+  plan.cubeFacePx = request.cubeFacePx > 0 ? request.cubeFacePx : render::cubeFacePxFor(scene);
   plan.cubeMapCoverage = request.inputLayout;
   plan.targetFrameMs = request.targetFrameMs;
   return plan;

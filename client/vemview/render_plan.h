@@ -6,7 +6,8 @@
 // - glossyPass: the L/H light sets and their regions (paper 004 section 4.2) only when some
 //   material is glossy; otherwise every surface is shaded from the diffuse lights alone.
 // - cubeMap: the environment cube map (subscribed from the stream, or made from the map file) only
-//   when some material is glossy (reflections) or the user asked for it as the background.
+//   when some material is glossy (reflections) or the user asked for it as the background; 512 px
+//   a face with a mirror-like material, else 128 (--cube-face-px overrides).
 // - shadowMaps: shadowedCount > 0 only when some surface can hide a light from another
 //   (scene::canCastShadows); the atlas is not even allocated otherwise. Once the renderer exists,
 //   shadowedCount is cut to what its atlas holds (withShadowMapCapacity).
@@ -22,6 +23,7 @@
 #include <optional>
 #include <string>
 
+#include "client/render/cube_resolution.h"
 #include "client/render/shading_lights.h"
 #include "client/scene/scene.h"
 
@@ -31,7 +33,7 @@ struct PlanRequest {
   std::size_t lightCount = 256;    // N asked for
   std::size_t shadowedCount = 64;  // S asked for
   int shadowMapPx = 256;
-  int cubeFacePx = 128;  // the cube map's level 0 (--cube-face-px)
+  int cubeFacePx = 0;  // the cube map's level 0 (--cube-face-px); 0: the plan's choice
   bool regions = true;
   int clusterBudget = 0;                // Q, 0: off
   bool backgroundWanted = false;        // --background
@@ -48,7 +50,8 @@ struct RenderPlan {
   bool shadowMaps = false;
   render::LightingOptions lighting;  // N, S (0 without shadow maps), regions, glossy, Q
   int shadowMapPx = 256;
-  int cubeFacePx = 128;
+  // render::cubeFacePxFor(scene) (512 px with a mirror-like material, else 128), or as asked.
+  int cubeFacePx = render::kCubeFacePx;
   std::optional<double> targetFrameMs;
   std::string glossyReason;  // why, in a few words
   std::string cubeMapReason;

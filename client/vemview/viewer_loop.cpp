@@ -31,10 +31,10 @@ double msSince(Clock::time_point start) {
 }
 
 std::expected<std::unique_ptr<LightInput>, std::string> openInput(const ViewerOptions& o,
-                                                                  bool cubeMap) {
+                                                                  bool cubeMap, int cubeFacePx) {
   if (!o.connectUrl.empty()) {
     return openStreamInput(StreamInputOptions{o.connectUrl, o.token, cubeMap, 2.0,
-                                              std::uint32_t(o.cubeFacePx)});
+                                              std::uint32_t(cubeFacePx)});
   }
   if (!o.lightFile.empty()) {
     return openLightFileInput(o.lightFile);
@@ -42,7 +42,7 @@ std::expected<std::unique_ptr<LightInput>, std::string> openInput(const ViewerOp
   const std::string map = o.mapFile.empty() ? defaultMapPath() : o.mapFile;
   return openMapInput(map,
                       MapInputOptions{std::max<std::size_t>(o.lightCount, 1024), cubeMap,
-                                      o.cubeFacePx});
+                                      cubeFacePx});
 }
 
 PlanRequest requestFor(const ViewerOptions& o, const InputFacts& facts) {
@@ -191,7 +191,7 @@ int runViewer(const ViewerOptions& options) {
     return EXIT_FAILURE;
   }
   const RenderPlan wanted = planFor(*scene, requestFor(options, InputFacts{}));
-  auto input = openInput(options, wanted.cubeMap);
+  auto input = openInput(options, wanted.cubeMap, wanted.cubeFacePx);
   if (!input) {
     spdlog::error("{}", input.error());
     return EXIT_FAILURE;

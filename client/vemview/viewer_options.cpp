@@ -98,10 +98,9 @@ void addLightingOptions(CLI::App& app, ViewerOptions& o) {
       ->check(CLI::Range(16, 4096))
       ->capture_default_str();
   app.add_option("--cube-face-px", o.cubeFacePx,
-                 "The cube map's face size: a mirror's reflection is this sharp (the stream "
-                 "serves 8 to 512)")
-      ->check(CLI::Range(8, 512))
-      ->capture_default_str();
+                 "The cube map's face size, 8 to 512: a mirror's reflection is this sharp "
+                 "(default: 512 with a mirror-like material, else 128)")
+      ->check(CLI::Range(8, 512));
   choiceOf<bool>(app.add_option("--regions", o.regions, "Angular-region light culling"),
                  {{"on", true}, {"off", false}})
       ->default_str(o.regions ? "on" : "off");

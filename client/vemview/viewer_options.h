@@ -35,7 +35,7 @@ struct ViewerOptions {
   std::size_t lightCount = 1024;
   std::size_t shadowedCount = 64;
   int shadowMapPx = 256;
-  int cubeFacePx = 128;  // the cube map's level 0 (a mirror's reflection is this sharp)
+  int cubeFacePx = 0;  // the cube map's level 0 (a mirror's reflection is this sharp); 0: the plan's
   bool regions = true;
   ShadingKind shading = ShadingKind::Lights;
   int clusterBudget = 128;

@@ -31,8 +31,9 @@ struct MaterialStudyOptions {
   bool gl = true;     // also the OpenGL renderer (headless)
   int glFrames = 3;   // timed OpenGL frames per point (the median is reported)
   std::size_t glShadowMaps = 256;  // OpenGL: min(N, this) shadow maps, shared by group below N
-  int cubeFacePx = kStudyCubeFacePx;  // the cube map both renderers read (level 0)
-  bool softShadows = false;  // Embree by ratio: embree::LightRenderOptions::softShadows
+  int cubeFacePx = 0;  // the cube map both renderers read (level 0); 0: render::cubeFacePxFor
+  // Embree by ratio: soft shadows (render/soft_shadows.h); OpenGL has none yet (needs gl = false).
+  bool softShadows = false;
   std::vector<std::string> materials;  // names of materialStudyMaterials(); empty: all
   std::string command;                 // for the report
   // When set: per material, map, N and renderer, a PNG of the reference, the lights' and the

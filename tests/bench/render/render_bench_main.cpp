@@ -48,8 +48,8 @@ struct BenchOptions {
   std::vector<std::string> materialNames;
   std::vector<std::size_t> counts;  // --materials: the light counts N (empty: the study's)
   std::size_t glShadowMaps = 256;   // --materials: OpenGL's shadow maps S = min(N, this)
-  int cubeFacePx = kStudyCubeFacePx;  // --materials: the cube maps' level 0
-  bool softShadows = false;           // --materials: Embree by ratio with soft shadows
+  int cubeFacePx = 0;  // --materials: the cube maps' level 0 (0: as vemview's plan)
+  bool softShadows = false;           // --materials: by ratio with soft shadows
   std::string dumpDir;
   std::string sweeps = "abcde";
   std::string table;
@@ -94,7 +94,7 @@ int parse(int argc, char** argv, BenchOptions& o) {
   app.add_option("--gl-frames", o.glFrames, "timed OpenGL frames per point")
       ->check(CLI::Range(1, 100));
   app.add_option("--embree-frames", o.embreeFrames)->check(CLI::Range(1, 100));
-  app.add_flag("--no-gl", o.noGl, "Embree only (no OpenGL context)");
+  CLI::Option* noGl = app.add_flag("--no-gl", o.noGl, "Embree only (no OpenGL context)");
   app.add_flag("--materials", o.materials,
                "the material study of issue 20 (a sphere on a plane, one material at a time, "
                "shading by the lights and by ratio) instead of the sweeps; writes --table");
@@ -107,12 +107,13 @@ int parse(int argc, char** argv, BenchOptions& o) {
                  "with --materials: OpenGL's shadow maps, min(N, this), shared by group below N")
       ->check(CLI::Range(std::size_t(1), vem::render::kMaxShadowMaps));
   app.add_option("--cube-face-px", o.cubeFacePx,
-                 "with --materials: the cube maps' face size, as vemview --cube-face-px")
-      ->check(CLI::Range(8, 512))
-      ->capture_default_str();
+                 "with --materials: the cube maps' face size, as vemview --cube-face-px "
+                 "(default: as vemview's plan, 512 for the mirror, else 128)")
+      ->check(CLI::Range(8, 512));
   app.add_flag("--soft-shadows", o.softShadows,
-               "with --materials: Embree by ratio casts each light's cone's soft shadow "
-               "(embree::LightRenderOptions::softShadows)");
+               "with --materials --no-gl: Embree by ratio, each light casts its cone's soft "
+               "shadow (render/soft_shadows.h; OpenGL has none yet)")
+      ->needs(noGl);
   app.add_flag("--list-maps", o.listMaps, "print how concentrated each HDRI's light is, and exit");
   app.add_option("--sweeps", o.sweeps, "the sweeps to run, e.g. ad (study_sweeps.h)");
   app.add_option("--table", o.table, "write the study (markdown) to this file");

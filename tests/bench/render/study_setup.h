@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "client/render/cube_resolution.h"
 #include "client/render/shading_lights.h"
 #include "client/scene/orbit_camera.h"
 #include "client/scene/scene.h"
@@ -48,10 +49,9 @@ struct StudyMap {
 // the means over the maps.
 [[nodiscard]] std::optional<std::string> knownDamage(const std::string& mapName);
 
-// cubeFacePx: the cube map's level 0, as vemview --cube-face-px (128 by default).
-inline constexpr int kStudyCubeFacePx = 128;
-[[nodiscard]] std::expected<StudyMap, std::string> loadStudyMap(const std::filesystem::path& path,
-                                                                int cubeFacePx = kStudyCubeFacePx);
+// cubeFacePx: the cube map's level 0, as vemview --cube-face-px.
+[[nodiscard]] std::expected<StudyMap, std::string> loadStudyMap(
+    const std::filesystem::path& path, int cubeFacePx = render::kCubeFacePx);
 
 struct StudyScene {
   scene::Scene scene;
