@@ -130,7 +130,7 @@ vec3 directionalAlbedo(float cosNormalEye) {
 
 // The unshadowed environment scaled by the lights' shadowed-to-unshadowed ratios, plus the
 // clipped peaks light by light, over the diffuse lights of n's region (light_renderer.cpp's
-// shadeByRatio, line for line).
+// ratioSumsOf and composeByRatio, line for line; no soft shadows yet).
 vec3 ratioShading(vec3 n, vec3 wo, vec3 p) {
   ivec2 range = ivec2(0, uDiffuseCount);
   if (uDiffuseUseRegions != 0) range = regionRange(uDiffuseRegions, uDiffuseOffsets, n);
