@@ -15,7 +15,7 @@
 //       + for mirror-like materials when a cube map is given, instead of the specular lights:
 //           mirrorReflectance(n, wo) sampleCubeMap(cube, R) V_R, V_R the occlusion of the
 //           reflected ray (0 where the scene blocks it: direct light only, as the Monte Carlo
-//           reference; the GL renderer's reflection is not occluded). A mirror without a diffuse
+//           reference; the GL renderer through gl/mirror_occlusion.h). A mirror without a diffuse
 //           part traces no light rays.
 // With LightRenderOptions::environment set, shading by ratio instead (issue 20; Heitz et al. 2018,
 // "Combining analytic direct illumination and stochastic shadows"): the unshadowed light comes

@@ -10,6 +10,7 @@
 #include "client/gl/gl_program.h"
 #include "client/gl/light_clip.h"
 #include "client/gl/light_textures.h"
+#include "client/gl/mirror_occlusion.h"
 #include "client/gl/overlay_pass.h"
 #include "client/gl/shadow_atlas.h"
 #include "client/gl/texture_buffer.h"
@@ -23,7 +24,8 @@ constexpr GLenum kEnvironmentUnit = kShadowUnit + 1;               // 13
 constexpr GLenum kCasterUnit = kEnvironmentUnit + 1;               // 14
 constexpr GLenum kIrradianceUnit = kCasterUnit + 1;                // 15
 constexpr GLenum kPrefilteredUnit = kIrradianceUnit + 1;           // 16
-constexpr GLint kFragmentUnitsNeeded = GLint(kPrefilteredUnit) + 1;
+constexpr GLenum kMirrorUnit = kPrefilteredUnit + 1;              // 17
+constexpr GLint kFragmentUnitsNeeded = GLint(kMirrorUnit) + 1;
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -83,6 +85,7 @@ struct GlRenderer::Impl {
   TextureBuffer casterDirs;
   std::size_t shadowCount = 0;
   std::optional<OverlayPass> overlay;  // windows only (presentToWindow)
+  MirrorOcclusion mirrors;             // what the mirror-like meshes' reflections hit
 
   std::size_t shadowPass(const render::ShadingLights& frame, GlFrameStats& stats);
   void backgroundPass(const scene::OrbitCamera& camera) const;
@@ -141,7 +144,8 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
                                              std::nullopt,
                                              TextureBuffer(GL_RGBA32F),
                                              0,
-                                             std::nullopt});
+                                             std::nullopt,
+                                             MirrorOcclusion{}});
   if (options.presentToWindow) {
     auto overlay = OverlayPass::create();
     if (!overlay) return std::unexpected(overlay.error());
@@ -149,6 +153,9 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
   }
   impl->meshes.reserve(scene.meshes.size());
   for (const scene::Mesh& mesh : scene.meshes) impl->meshes.emplace_back(mesh);
+  auto mirrors = MirrorOcclusion::create(scene, impl->meshes);
+  if (!mirrors) return std::unexpected(mirrors.error());
+  impl->mirrors = std::move(*mirrors);
   if (impl->atlas.capacity() < options.maxShadowMaps) {
     spdlog::warn("shadow atlas holds {} maps of {} px (GL_MAX_TEXTURE_SIZE), not {}",
                  impl->atlas.capacity(), impl->atlas.tilePx(), options.maxShadowMaps);
@@ -248,10 +255,13 @@ void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
   lighting.set("uIrradiance", int(kIrradianceUnit));
   lighting.set("uPrefiltered", int(kPrefilteredUnit));
   lighting.set("uMinEffectiveLights", float(ratio.minEffectiveLights));
+  lighting.set("uMirrorDistance", int(kMirrorUnit));
   if (byRatio) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   const bool glossyPass = frame.glossy.has_value() && !byRatio;
-  for (const GlMesh& mesh : meshes) {
+  for (std::size_t meshIndex = 0; meshIndex < meshes.size(); ++meshIndex) {
+    const GlMesh& mesh = meshes[meshIndex];
     setMaterial(materials.at(mesh.material()), glossyPass);
+    mirrors.bindMesh(lighting, meshIndex, kMirrorUnit);
     if (byRatio) {
       environmentLighting.bindMaterial(lighting, mesh.material(), kIrradianceUnit,
                                        kPrefilteredUnit);

@@ -11,7 +11,8 @@
 // What a frame computes follows its ShadingLights: no shadowDirs, no shadow pass; the same
 // lightsKey (and caster count) as the previous frame, the maps are reused; empty diffuseLists, every
 // diffuse light is walked; no glossy sets, glossy materials take their specular lobe from the
-// diffuse lights; mirror-like materials reflect the cube map (black without one).
+// diffuse lights; mirror-like materials reflect the cube map (black without one), black where the
+// scene blocks the reflected ray (mirror_occlusion.h: drawn once, at create()).
 //
 // With a RatioShading, shading by ratio instead (issue 20): the model and its sums are
 // client/embree/light_renderer.h's, term for term, over the diffuse lights and with the shadow

@@ -44,6 +44,12 @@ uniform int uSpecularByRatio;      // the material has a prefiltered cube
 uniform float uAlbedoScale[32];    // render::kAlbedoTableSize entries of rho = F0 scale + bias
 uniform float uAlbedoBias[32];
 uniform float uMinEffectiveLights;
+// What a mirror-like mesh's reflected rays hit (mirror_occlusion.h).
+uniform samplerCube uMirrorDistance;  // distance from uMirrorCentre to the other meshes
+uniform int uMirrorOccluded;          // this mesh has a distance cube
+uniform vec3 uMirrorCentre;
+uniform float uMirrorRadius;
+uniform float uSceneDiameter;
 uniform float uSpecularLookupBlend;  // render::specularLookupBlend: P is read toward mix(n, R, b)
 
 const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);  // Rec. 709 (core/color.h)
@@ -176,6 +182,24 @@ vec3 ratioShading(vec3 n, vec3 wo, vec3 p) {
   return radiance;
 }
 
+// Whether the scene blocks the ray p + t r (r unit): marched in kMirrorMarchSteps steps growing
+// geometrically from 1 % of the mirror's radius to the scene's diameter beyond it, blocked at the
+// first point farther from the mirror's centre than the surface its distance cube holds in that
+// direction (mirror_occlusion.h).
+const int kMirrorMarchSteps = 48;
+bool reflectionBlocked(vec3 p, vec3 r) {
+  if (uMirrorOccluded == 0) return false;
+  float t = 0.01 * uMirrorRadius;
+  float growth =
+      pow((uSceneDiameter + 2.0 * uMirrorRadius) / t, 1.0 / float(kMirrorMarchSteps - 1));
+  for (int k = 0; k < kMirrorMarchSteps; ++k) {
+    vec3 d = p + t * r - uMirrorCentre;
+    if (length(d) > textureLod(uMirrorDistance, d, 0.0).r) return true;
+    t *= growth;
+  }
+  return false;
+}
+
 void main() {
   vec3 wo = normalize(uEye - vPositionWorld);
   vec3 n = normalize(vNormalWorld);
@@ -189,7 +213,9 @@ void main() {
   }
   if (uMirror != 0 && uHasEnvironment != 0) {
     vec3 r = reflectedDirection(n, wo);
-    radiance += mirrorReflectance(n, wo) * textureLod(uEnvironment, r, 0.0).rgb;
+    if (!reflectionBlocked(vPositionWorld, normalize(r))) {
+      radiance += mirrorReflectance(n, wo) * textureLod(uEnvironment, r, 0.0).rgb;
+    }
   }
   fragColor = vec4(radiance, 1.0);
 }
