@@ -133,8 +133,7 @@ struct RatioSums {
   float specularBlend = 0.0F;  // t: ratio_s = mix(ratio_d, S_s / U_s, t)
 };
 
-
-
+// A 32-bit integer hash (xorshift-multiply rounds): the soft shadows' fixed random pattern.
 std::uint32_t hash32(std::uint32_t x) {
   x ^= x >> 16U;
   x *= 0x7feb352dU;
