@@ -285,6 +285,11 @@ CubeMap prefilteredCubeOf(const CubeMap& radiance, const scene::Material& materi
   });
 }
 
+double peakFactorFor(std::size_t lightCount) {
+  const double n = double(std::max<std::size_t>(lightCount, 1));
+  return std::clamp(20.0 * std::sqrt(64.0 / n), 5.0, 40.0);
+}
+
 EnvironmentLighting makeEnvironmentLighting(const CubeMap& radiance,
                                             std::span<const scene::Material> materials,
                                             const EnvironmentLightingOptions& options) {

@@ -79,6 +79,14 @@ struct EnvironmentLightingOptions {
   double peakFactor = 20.0;  // T = peakFactor x the mean luminance of the environment
 };
 
+// The peak factor for N lights: 20 sqrt(64 / N), within [5, 40] (40 at N = 16, 10 at 256, 5 from
+// 1024). The more lights, the more of the bright peaks they carry exactly and the less the split
+// sum has to average; the fewer, the noisier those peaks. Against 1 %-noise references, by ratio,
+// against a fixed 20: GGX under studio.exr at N = 1024 from 2.7-3.4 % to 1.5-1.7 % (the split sum's
+// plateau), and the default scene at N = 16 from 3.7-4.4 % to 3.3-3.4 %
+// (docs/shading-by-ratio.md).
+[[nodiscard]] double peakFactorFor(std::size_t lightCount);
+
 // The directional albedo table of a glossy material (0 everywhere for a Lambertian one).
 [[nodiscard]] DirectionalAlbedo directionalAlbedoOf(const scene::Material& material);
 [[nodiscard]] glm::vec3 directionalAlbedo(const DirectionalAlbedo& table,

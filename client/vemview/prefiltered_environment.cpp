@@ -9,6 +9,7 @@ PrefilteredEnvironment::PrefilteredEnvironment(const RenderPlan& plan) {
   options_ = render::EnvironmentLightingOptions{};
   options_->diffuse = plan.irradianceCube;
   options_->specular = plan.prefilteredCubes;
+  options_->peakFactor = render::peakFactorFor(plan.lighting.lightCount);
 }
 
 PrefilteredEnvironment::Current PrefilteredEnvironment::forCube(

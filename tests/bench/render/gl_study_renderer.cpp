@@ -45,7 +45,10 @@ class GlStudyRendererImpl final : public StudyRenderer {
     if (auto ready = prepare(config); !ready) return std::unexpected(ready.error());
     render::ShadingLights rekeyed = lights;
     rekeyed.lightsKey = ~lights.lightsKey;
-    const std::uint64_t cubeVersion = std::hash<std::string>{}(map.name);
+    // A new version for every prefiltered environment (its peak factor follows N), so the
+    // renderer uploads it.
+    const std::uint64_t cubeVersion = std::hash<std::string>{}(
+        map.name + (environment != nullptr ? fmt::format("/{}", environment->peakLuminance) : ""));
     // The environment is built once per map (its upload is not part of the timed frames).
     const gl::RatioShading ratio{environment, cubeVersion};
     (void)renderer_->render(scene_.camera, rekeyed, &map.cube, cubeVersion, ratio);  // warm-up

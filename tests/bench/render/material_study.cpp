@@ -293,12 +293,26 @@ std::expected<std::string, std::string> runMaterialStudy(const MaterialStudyOpti
                             reference->renderSeconds, reference->fromCache ? " (cached)" : "",
                             percent(reference->relativeError), percent(curve.points[0].second),
                             percent(curve.points[1].second), curve.seconds[2] / 64.0 * 1e3);
-      const auto prefilterStart = std::chrono::steady_clock::now();
-      const render::EnvironmentLighting environment =
-          render::makeEnvironmentLighting(map.cube, scene->scene.materials);
-      prefilter += fmt::format("| {} | {} | {:.1f} |\n", material.name, map.name,
-                               secondsSince(prefilterStart) * 1e3);
+      // The prefiltered environment for each peak factor the counts call for (as vemview's,
+      // render::peakFactorFor); the first one's build time is reported.
+      std::map<double, render::EnvironmentLighting> environments;
+      const auto environmentFor = [&](std::size_t n) -> const render::EnvironmentLighting& {
+        render::EnvironmentLightingOptions environmentOptions;
+        environmentOptions.peakFactor = render::peakFactorFor(n);
+        auto [at, made] = environments.try_emplace(environmentOptions.peakFactor);
+        if (made) {
+          const auto prefilterStart = std::chrono::steady_clock::now();
+          at->second = render::makeEnvironmentLighting(map.cube, scene->scene.materials,
+                                                       environmentOptions);
+          if (environments.size() == 1) {
+            prefilter += fmt::format("| {} | {} | {:.1f} |\n", material.name, map.name,
+                                     secondsSince(prefilterStart) * 1e3);
+          }
+        }
+        return at->second;
+      };
       for (const std::size_t n : options.counts) {
+        const render::EnvironmentLighting& environment = environmentFor(n);
         for (const RendererKind kind : {RendererKind::Embree, RendererKind::Gl}) {
           StudyRenderer* renderer =
               kind == RendererKind::Embree ? embreeRenderer.get() : glRenderer.renderer.get();
