@@ -275,5 +275,16 @@ TEST(EnvironmentLighting, PeakFractionsGiveTheLightsWhatTheClippedCubesLeaveOut)
   EXPECT_EQ(peakFractionsOf(diffuseOnly, cube, lights), std::vector<float>(2, 0.0F));
 }
 
+// The clip follows the light count: 20 sqrt(64 / N) within [5, 40]; no light at all is the few
+// lights' 40, not a division by zero.
+TEST(EnvironmentLighting, PeakFactorFollowsTheLightCount) {
+  EXPECT_DOUBLE_EQ(peakFactorFor(0), 40.0);
+  EXPECT_DOUBLE_EQ(peakFactorFor(16), 40.0);
+  EXPECT_DOUBLE_EQ(peakFactorFor(64), 20.0);
+  EXPECT_DOUBLE_EQ(peakFactorFor(256), 10.0);
+  EXPECT_DOUBLE_EQ(peakFactorFor(1024), 5.0);
+  EXPECT_DOUBLE_EQ(peakFactorFor(4096), 5.0);
+}
+
 }  // namespace
 }  // namespace vem::render
