@@ -28,6 +28,14 @@ scene::Material ggx(float roughness, glm::vec3 f0, float diffuse) {
   return m;
 }
 
+// A gold GGX sphere (no diffuse part, the given GGX alpha) resting on a Lambertian plane, and the
+// camera of the glossy tests, close on the sphere.
+scene::Scene goldSphereOnPlane(float alpha) {
+  return sphereScene(glm::vec3(0, 0.5F, 0), 0.5F, true,
+                     ggx(std::sqrt(alpha), glm::vec3(1.0F, 0.78F, 0.34F), 0.0F), lambertian(0.5F));
+}
+scene::OrbitCamera goldSphereCamera() { return cameraAt(glm::vec3(0, 0.5F, 0), 2.2F, 0.35F); }
+
 struct RatioRender {
   render::LinearImage image;
   bool finite = true;
@@ -111,10 +119,8 @@ TEST(RatioShading, SunAtOneHundredThousandTimesTheSkyStaysFiniteAndNearTheRefere
 // (render::specularLookupDirection) it is within 4 %.
 TEST(RatioShading, RoughGgxUnderBroadLightIsWithinFourPerCentOfTheReference) {
   const EnvMap city = sharedHdri("city");
-  const scene::Scene s =
-      sphereScene(glm::vec3(0, 0.5F, 0), 0.5F, true,
-                  ggx(std::sqrt(0.6F), glm::vec3(1.0F, 0.78F, 0.34F), 0.0F), lambertian(0.5F));
-  const scene::OrbitCamera camera = cameraAt(glm::vec3(0, 0.5F, 0), 2.2F, 0.35F);
+  const scene::Scene s = goldSphereOnPlane(0.6F);
+  const scene::OrbitCamera camera = goldSphereCamera();
   const ReferenceOptions referenceOptions = fixedSamples(1024);
   const ReferenceResult reference =
       renderReference(built(s), camera, kWidthPx, kHeightPx, city, referenceOptions);
@@ -133,10 +139,8 @@ TEST(RatioShading, RoughGgxUnderBroadLightIsWithinFourPerCentOfTheReference) {
 // N = 1024) the lights carry the softboxes exactly, and the error falls with N.
 TEST(RatioShading, GlossyUnderCompactSourcesKeepsFallingWithTheLightCount) {
   const EnvMap studio = sharedHdri("studio");
-  const scene::Scene s =
-      sphereScene(glm::vec3(0, 0.5F, 0), 0.5F, true,
-                  ggx(std::sqrt(0.3F), glm::vec3(1.0F, 0.78F, 0.34F), 0.0F), lambertian(0.5F));
-  const scene::OrbitCamera camera = cameraAt(glm::vec3(0, 0.5F, 0), 2.2F, 0.35F);
+  const scene::Scene s = goldSphereOnPlane(0.3F);
+  const scene::OrbitCamera camera = goldSphereCamera();
   const ReferenceResult reference =
       renderReference(built(s), camera, kWidthPx, kHeightPx, studio, fixedSamples(4096));
   const auto errorOf = [&](std::size_t n, double peakFactor) {
