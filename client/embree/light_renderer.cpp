@@ -28,9 +28,8 @@ struct Frame {
   const CubeMap* cube;
   LightRenderOptions options;
   std::vector<float> peakFractions;  // per diffuse light, with an environment (ratio shading)
-  // Per diffuse light, the cosine of its shadow rays' cone (render/soft_shadows.h; 1: a hard
-  // shadow); empty: hard shadows.
-  std::vector<float> coneCos;
+  // The diffuse lights' strata (render/soft_shadows.h); none: hard shadows.
+  std::optional<render::ShadowStrata> strata;
 };
 
 bool visible(const Frame& frame, const ShadingPoint& p, glm::vec3 dir) {
@@ -143,21 +142,14 @@ std::uint32_t hash32(std::uint32_t x) {
   return x;
 }
 
-// A direction in the cone of half-angle acos(coneCos) around dir, uniform in solid angle, from the
-// hash of (pixel, light): a fixed pattern, so a frame does not depend on the schedule.
-glm::vec3 directionInCone(glm::vec3 dir, float coneCos, std::uint32_t pixel, std::uint32_t light) {
-  if (coneCos >= 1.0F) return dir;
+// Three numbers in [0, 1) from the hash of (pixel, light): a fixed pattern, so a frame does not
+// depend on the schedule.
+glm::vec3 uniformsOf(std::uint32_t pixel, std::uint32_t light) {
   const std::uint32_t h1 = hash32(pixel * 0x9e3779b1U ^ hash32(light + 0x68e31da4U));
   const std::uint32_t h2 = hash32(h1 ^ 0xb5297a4dU);
-  const float u1 = float(h1 >> 8U) * (1.0F / 16777216.0F);
-  const float u2 = float(h2 >> 8U) * (1.0F / 16777216.0F);
-  const float c = 1.0F - u1 * (1.0F - coneCos);
-  const float sine = std::sqrt(std::max(0.0F, 1.0F - c * c));
-  const float phi = 2.0F * std::numbers::pi_v<float> * u2;
-  const glm::vec3 t = glm::normalize(glm::cross(
-      dir, std::abs(dir.x) > 0.5F ? glm::vec3(0.0F, 1.0F, 0.0F) : glm::vec3(1.0F, 0.0F, 0.0F)));
-  const glm::vec3 b = glm::cross(dir, t);
-  return glm::normalize(c * dir + sine * (std::cos(phi) * t + std::sin(phi) * b));
+  const std::uint32_t h3 = hash32(h2 ^ 0x1b56c4e9U);
+  constexpr float kScale = 1.0F / 16777216.0F;
+  return {float(h1 >> 8U) * kScale, float(h2 >> 8U) * kScale, float(h3 >> 8U) * kScale};
 }
 
 bool specularByRatio(const Frame& frame, const ShadingPoint& p) {
@@ -180,17 +172,25 @@ RatioSums ratioSumsOf(const Frame& frame, const ShadingPoint& p, std::uint32_t p
        lightsUsed ? diffuseCandidates(frame, p.normal) : std::vector<std::uint32_t>{}) {
     const Light& light = frame.lights.diffuse.lights[i];
     const float cosine = glm::dot(p.normal, light.dir);
-    if (cosine <= 0.0F) continue;
-    const bool soft = !frame.coneCos.empty() && frame.coneCos[i] < 1.0F;
-    const glm::vec3 shadowDir =
-        soft ? directionInCone(light.dir, frame.coneCos[i], pixel, i) : light.dir;
+    const bool soft = frame.strata.has_value() && frame.strata->softAt(i);
+    glm::vec3 shadowDir = light.dir;
+    glm::vec3 wd = light.rgb * cosine;
+    if (soft) {
+      // One direction of the light's stratum, weighed by the stratum's power and its own cosine.
+      const glm::vec3 u = uniformsOf(pixel, i);
+      shadowDir = frame.strata->sample(i, light.dir, u.x, u.y, u.z);
+      const float drawnCosine = glm::dot(p.normal, shadowDir);
+      if (drawnCosine <= 0.0F) continue;  // this draw lies below the surface
+      wd = frame.strata->powerRgb[i] * drawnCosine;
+    } else if (cosine <= 0.0F) {
+      continue;
+    }
     const float v = visible(frame, p, shadowDir) ? 1.0F : 0.0F;
     LightSums& sums = soft ? out.soft : out.hard;
-    const glm::vec3 wd = light.rgb * cosine;
     sums.unshadowedD += wd;
     sums.shadowedD += v * wd;
-    if (bySpecular) {
-      const glm::vec3 full = render::specularBrdf(m, p.normal, p.wo, light.dir) * wd;
+    if (bySpecular && cosine > 0.0F) {
+      const glm::vec3 full = render::specularBrdf(m, p.normal, p.wo, light.dir) * light.rgb * cosine;
       const float peak = frame.peakFractions.empty() ? 0.0F : frame.peakFractions[i];
       out.peakS += (v * peak) * full;
       const glm::vec3 ws = (1.0F - peak) * full;
@@ -339,8 +339,7 @@ render::LinearImage renderWithLights(const EmbreeScene& scene, const scene::Orbi
                [&](int row) { renderRow(frame, camera, row, image); });
     return image;
   }
-  frame.coneCos = render::shadowConeSolidAnglesSr(lights.diffuse.lights, *cube);
-  for (float& c : frame.coneCos) c = render::coneCosineOf(c);
+  frame.strata = render::buildShadowStrata(lights.diffuse.lights, *cube);
   std::vector<PixelRecord> records(std::size_t(widthPx) * std::size_t(heightPx));
   forEachRow(heightPx, options.threadCount,
              [&](int row) { recordRow(frame, camera, row, records, image); });

@@ -33,12 +33,13 @@
 // lobe's estimate of the same visibility. Mirror-like materials keep the cube map's reflection
 // above, with the diffuse part by ratio.
 // Soft shadows (by ratio, LightRenderOptions::softShadows; render/soft_shadows.h): a light whose
-// cone of solid angle Omega_i is not 0 casts that cone's soft shadow:
-// its V is one occlusion ray toward a direction in the cone, fixed per (pixel, light), and the
-// pixel's sums of those lights (numerators and denominators apart) are averaged over the pixels
-// within softShadowFilterPx that see the same material at a depth within about 2 % and a normal
-// within about 37 degrees (weights: a Gaussian of sigma = radius / 2 in pixels, exp(-(dt / 0.02
-// t)^2), (n . n')^16). Converged (32 rays per light, no filter) it measured the same errors.
+// stratum of the sky is not compact casts that stratum's soft shadow: per (pixel, light) a fixed
+// draw of one direction from the stratum (radiance x solid angle), weighed by the stratum's power
+// times the cosine there (0 below the surface), with one occlusion ray for its V. The pixel's sums
+// of those lights (numerators and denominators apart) are averaged over the pixels within
+// softShadowFilterPx that see the same material at a depth within about 2 % and a normal within
+// about 37 degrees (weights: a Gaussian of sigma = radius / 2 in pixels, exp(-(dt / 0.02 t)^2),
+// (n . n')^16). Compact lights keep one ray toward their own direction.
 // V is an occlusion ray toward the light (1 with shadows off). Pixels whose ray leaves the scene
 // show the cube map in the ray's direction (black without one) and are not covered.
 // Rows are shared by up to options.threadCount of TBB's threads (parallel_rows.h); the image does

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "client/render/cube_map_sampling.h"
+#include "client/render/texel_samples.h"
 #include "client/render/shading_model.h"
 #include "core/color.h"
 #include "core/cube_map_lookup.h"
@@ -26,48 +27,6 @@ constexpr int kAlbedoStrata = 64;  // per dimension: 4096 samples per table entr
 // Prefilter weights below this fraction of the lobe's peak are skipped (Phong and Blinn only,
 // whose weights need a pow).
 constexpr float kNegligibleWeight = 1e-4F;
-
-struct SourceTexel {
-  glm::vec3 dir;
-  glm::vec3 radianceSr;  // radiance times the texel's solid angle
-  float solidAngleSr = 0.0F;
-};
-
-// Level `level` of the cube, one entry per texel: direction, solid angle (2/F)^2 max|d|^3 (the
-// face's area element seen from the centre), and radiance times it. Non-finite texels count as
-// black.
-std::vector<SourceTexel> texelsOf(const CubeMapLevel& level) {
-  const int f = level.facePx;
-  std::vector<SourceTexel> out;
-  out.reserve(std::size_t(6 * f * f));
-  const float cellArea = (2.0F / float(f)) * (2.0F / float(f));
-  for (int face = 0; face < 6; ++face) {
-    const std::vector<float>& texels = level.faces[std::size_t(face)];
-    for (int row = 0; row < f; ++row) {
-      for (int column = 0; column < f; ++column) {
-        const glm::vec3 d = cubeTexelDirection(face, f, column + 0.5, row + 0.5);
-        const float m = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
-        const float sr = cellArea * m * m * m;
-        const std::size_t i = 3 * (std::size_t(row) * std::size_t(f) + std::size_t(column));
-        glm::vec3 radiance(texels[i], texels[i + 1], texels[i + 2]);
-        if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) ||
-            !std::isfinite(radiance.z)) {
-          radiance = glm::vec3(0.0F);
-        }
-        out.push_back(SourceTexel{d, radiance * sr, sr});
-      }
-    }
-  }
-  return out;
-}
-
-// The first level whose face is at most facePx (the smallest level when every face is larger).
-const CubeMapLevel& levelAtMost(const CubeMap& cube, int facePx) {
-  for (const CubeMapLevel& level : cube.levels) {
-    if (level.facePx <= facePx) return level;
-  }
-  return cube.levels.back();
-}
 
 // A one-level cube of facePx texels a side whose texel in direction d is value(d).
 template <typename Value>
@@ -180,7 +139,7 @@ float albedoAt(const scene::Material& m, float mu) {
 double meanLuminance(const CubeMapLevel& level) {
   double sum = 0.0;
   double sr = 0.0;
-  for (const SourceTexel& t : texelsOf(level)) {
+  for (const TexelSample& t : texelSamplesOf(level)) {
     sum += luminance(t.radianceSr);
     sr += double(t.solidAngleSr);
   }
@@ -242,10 +201,10 @@ int prefilterFacePxOf(const scene::Material& material) {
 }
 
 CubeMap irradianceCubeOf(const CubeMap& radiance, int facePx) {
-  const std::vector<SourceTexel> source = texelsOf(levelAtMost(radiance, kIrradianceSourceMaxPx));
+  const std::vector<TexelSample> source = texelSamplesOf(cubeLevelAtMost(radiance, kIrradianceSourceMaxPx));
   return cubeOf(facePx, [&](glm::vec3 n) {
     glm::vec3 sum(0.0F);
-    for (const SourceTexel& s : source) {
+    for (const TexelSample& s : source) {
       sum += s.radianceSr * std::max(0.0F, glm::dot(n, s.dir));
     }
     return sum;
@@ -254,7 +213,7 @@ CubeMap irradianceCubeOf(const CubeMap& radiance, int facePx) {
 
 CubeMap prefilteredCubeOf(const CubeMap& radiance, const scene::Material& material) {
   const int facePx = prefilterFacePxOf(material);
-  const std::vector<SourceTexel> source = texelsOf(levelAtMost(radiance, facePx));
+  const std::vector<TexelSample> source = texelSamplesOf(cubeLevelAtMost(radiance, facePx));
   const bool ggx = material.lobe == scene::Lobe::Ggx;
   const float a = material.roughness * material.roughness;
   const float a2 = a * a;
@@ -268,7 +227,7 @@ CubeMap prefilteredCubeOf(const CubeMap& radiance, const scene::Material& materi
   return cubeOf(std::max(facePx, kMinPrefilteredFacePx), [&](glm::vec3 r) {
     glm::vec3 sum(0.0F);
     float weights = 0.0F;
-    for (const SourceTexel& s : source) {
+    for (const TexelSample& s : source) {
       const float cosRL = glm::dot(r, s.dir);
       if (cosRL <= minCos || cosRL <= 0.0F) continue;
       float w = 0.0F;

@@ -4,26 +4,89 @@
 #include <cmath>
 #include <numbers>
 
-#include "client/render/cube_map_sampling.h"
+#include <glm/geometric.hpp>
+
+#include "client/render/texel_samples.h"
 #include "core/color.h"
+#include "core/direction_tree.h"
 
 namespace vem::render {
 
-std::vector<float> shadowConeSolidAnglesSr(std::span<const Light> lights, const CubeMap& cube) {
-  std::vector<float> out(lights.size(), 0.0F);
-  for (std::size_t i = 0; i < lights.size(); ++i) {
-    const double radiance = luminance(sampleCubeMap(cube, lights[i].dir));
-    const double irradiance = luminance(lights[i].rgb);
-    if (!(radiance > 0.0) || !std::isfinite(radiance) || !std::isfinite(irradiance)) continue;
-    const double solidAngleSr = irradiance / radiance;
-    if (solidAngleSr < double(kSoftShadowMinSr)) continue;
-    out[i] = float(std::min(solidAngleSr, double(kSoftShadowMaxSr)));
-  }
-  return out;
+glm::vec3 ShadowStrata::sample(std::size_t light, glm::vec3 lightDir, float u1, float u2,
+                               float u3) const {
+  const auto first = cdf.begin() + std::ptrdiff_t(offsets[light]);
+  const auto last = cdf.begin() + std::ptrdiff_t(offsets[light + 1]);
+  if (!softAt(light) || first == last) return lightDir;
+  const auto at = std::min(std::upper_bound(first, last, u1), last - 1);
+  return directionInCubeTexel(texel[std::size_t(at - cdf.begin())], facePx, u2, u3);
 }
 
-float coneCosineOf(float solidAngleSr) {
-  return 1.0F - solidAngleSr / (2.0F * std::numbers::pi_v<float>);
+ShadowStrata buildShadowStrata(std::span<const Light> lights, const CubeMap& cube) {
+  const std::size_t n = lights.size();
+  ShadowStrata out;
+  out.soft.assign(n, 0);
+  out.powerRgb.assign(n, glm::vec3(0.0F));
+  out.spreadSr.assign(n, 0.0F);
+  out.offsets.assign(n + 1, 0);
+  const CubeMapLevel& level = cubeLevelAtMost(cube, kStrataFacePx);
+  out.facePx = level.facePx;
+  std::vector<glm::dvec3> dirs;
+  std::vector<std::uint32_t> lightOf;  // the index in `lights` of each entry of dirs
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const glm::dvec3 d(lights[i].dir);
+    const double length = glm::length(d);
+    if (!(length > 0.0) || !std::isfinite(length)) continue;
+    dirs.push_back(d / length);
+    lightOf.push_back(i);
+  }
+  if (dirs.empty()) return out;
+  const DirectionCloud cloud{dirs};
+  const DirectionTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+
+  // Each texel's nearest light, then the texels grouped by light (a counting sort).
+  const std::vector<TexelSample> texels = texelSamplesOf(level);
+  std::vector<std::uint32_t> owner(texels.size());
+  std::vector<std::uint32_t> count(n, 0);
+  std::vector<glm::dvec3> weightedDir(n, glm::dvec3(0.0));
+  std::vector<double> weight(n, 0.0);
+  for (std::size_t t = 0; t < texels.size(); ++t) {
+    const glm::dvec3 d(texels[t].dir);
+    std::uint32_t nearest = 0;
+    double chord2 = 0.0;
+    tree.knnSearch(&d.x, 1, &nearest, &chord2);
+    const std::uint32_t i = lightOf[nearest];
+    owner[t] = i;
+    ++count[i];
+    const double y = luminance(texels[t].radianceSr);
+    out.powerRgb[i] += texels[t].radianceSr;
+    weightedDir[i] += y * d;
+    weight[i] += y;
+  }
+  for (std::size_t i = 0; i < n; ++i) out.offsets[i + 1] = out.offsets[i] + count[i];
+  out.texel.resize(texels.size());
+  out.cdf.resize(texels.size());
+  std::vector<std::uint32_t> next(out.offsets.begin(), out.offsets.end() - 1);
+  for (std::size_t t = 0; t < texels.size(); ++t) out.texel[next[owner[t]]++] = std::uint32_t(t);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t begin = out.offsets[i];
+    const std::uint32_t end = out.offsets[i + 1];
+    if (!(weight[i] > 0.0) || !std::isfinite(weight[i])) {
+      // No light to draw from: a hard shadow, and a uniform table that sample() never needs.
+      for (std::uint32_t k = begin; k < end; ++k) out.cdf[k] = float(k - begin + 1) / float(end - begin);
+      out.powerRgb[i] = glm::vec3(0.0F);
+      continue;
+    }
+    double sum = 0.0;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      sum += luminance(texels[out.texel[k]].radianceSr);
+      out.cdf[k] = float(sum / weight[i]);
+    }
+    out.cdf[end - 1] = 1.0F;
+    const double meanLength = std::min(1.0, glm::length(weightedDir[i]) / weight[i]);
+    out.spreadSr[i] = float(4.0 * std::numbers::pi * (1.0 - meanLength));
+    out.soft[i] = out.spreadSr[i] >= kSoftShadowMinSr ? 1 : 0;
+  }
+  return out;
 }
 
 }  // namespace vem::render

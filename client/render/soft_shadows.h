@@ -1,20 +1,33 @@
 // Soft shadows for shading by ratio (issue 20, diffuse at few lights). A light of the core stands
-// for a part of the sky: the Havran sampler gives every light the same power, so its share of the
-// sphere is about its irradiance over the radiance where it sits,
-//   Omega_i = Y(rgb_i) / Y(L(dir_i))   (sr; L from the cube map's level 0).
-// At N = 16 a light stands for up to a twelfth of the sphere, and its hard shadow is a sharp copy
-// of the caster's outline where the sky casts a penumbra. With soft shadows a light casts the
-// shadow of the cone of solid angle Omega_i around its direction instead: its visibility is the
-// unblocked fraction of the cone. A light under kSoftShadowMinSr (a sun, a lamp, a softbox's
-// share) keeps its hard shadow, and a cone is at most kSoftShadowMaxSr (the wider ones come from
-// dim parts of the sky, whose lights lie far apart).
-// Both renderers estimate the same fraction: Embree with one jittered ray per light and pixel
-// and a filter over neighbouring pixels (embree/light_renderer.h), OpenGL by percentage-closer
-// soft shadows in the light's shadow map (gl/shaders/shadow_lookup.glsl).
+// for a part of the sky, and at N = 16 that part is up to a twelfth of the sphere: its hard shadow
+// is a sharp copy of the caster's outline where the sky casts a penumbra, and a ground point that
+// sees the light's direction is lit by the whole part even where the caster hides most of it.
+//
+// With soft shadows each light has a stratum: the texels of the cube map (its level of at most
+// kStrataFacePx a side) nearer to its direction than to any other light's, the sphere's Voronoi
+// cells around the lights (the client has the lights, not the daemon's cells of light_cells.h).
+// The strata tile the sphere. A shading point draws one direction per light from the light's
+// stratum, with probability proportional to radiance x solid angle, and weighs it by the
+// stratum's power times the cosine there; the visible fraction of the weights over the drawn
+// directions is an unbiased estimate, per stratum, of the fraction of the stratum's irradiance
+// that reaches the point (its visibility-weighted integral over the unshadowed one), and the
+// renderer averages it over neighbouring pixels (embree/light_renderer.h).
+//
+// A light whose stratum's light is compact keeps its hard shadow toward its own direction: a sun,
+// a lamp, a softbox's share. Compact means an effective solid angle under kSoftShadowMinSr, taken
+// from the spread of the stratum's radiance-weighted directions: for mean resultant length R of
+// the unit directions weighted by luminance x sr, 4 pi (1 - R), which is exactly the solid angle
+// of a uniformly bright cone (R = (1 + cos theta) / 2) and 0 for a single texel.
+//
+// Embree only: OpenGL's shadow maps look along one direction per light (gl/ has no soft shadows).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "core/cube_map.h"
 #include "core/light.h"
@@ -22,15 +35,34 @@
 namespace vem::render {
 
 inline constexpr float kSoftShadowMinSr = 0.01F;
-inline constexpr float kSoftShadowMaxSr = 1.0F;
+// The strata's resolution: 64 px a side is 1.4 degrees a texel, 24576 texels.
+inline constexpr int kStrataFacePx = 64;
 
-// Per light, Omega_i above clamped to kSoftShadowMaxSr, or 0 (a hard shadow) under
-// kSoftShadowMinSr, where the cube map is black in the light's direction, or where either
-// luminance is not finite.
-[[nodiscard]] std::vector<float> shadowConeSolidAnglesSr(std::span<const Light> lights,
-                                                         const CubeMap& cube);
+struct ShadowStrata {
+  int facePx = 0;  // of the texels below (texel_samples.h's indexing)
+  // Per light: 1 when its shadow is soft (drawn from its stratum), 0 when hard.
+  std::vector<std::uint8_t> soft;
+  // Per light: the radiance x sr over its stratum (its power, in the map's units x sr).
+  std::vector<glm::vec3> powerRgb;
+  // Per light: its effective solid angle, sr (above).
+  std::vector<float> spreadSr;
+  // Light i's texels are texel[offsets[i] .. offsets[i + 1]), with cdf their cumulative share of
+  // the stratum's luminance x sr (the last of each is 1). A stratum can hold no texel (a light
+  // whose direction another light shares).
+  std::vector<std::uint32_t> offsets;
+  std::vector<std::uint32_t> texel;
+  std::vector<float> cdf;
 
-// The cosine of the half-angle of a cone of solid angle `solidAngleSr` (0 .. 2 pi): 1 - Omega / 2 pi.
-[[nodiscard]] float coneCosineOf(float solidAngleSr);
+  [[nodiscard]] bool softAt(std::size_t light) const { return soft[light] != 0; }
+  // A direction in light `light`'s stratum drawn with probability proportional to luminance x
+  // solid angle from (u1, u2, u3) in [0, 1)^3: u1 picks the texel, (u2, u3) the point in it. The
+  // light's own direction when its shadow is hard.
+  [[nodiscard]] glm::vec3 sample(std::size_t light, glm::vec3 lightDir, float u1, float u2,
+                                 float u3) const;
+};
+
+// The strata of `lights` over `cube` (at least one level). Lights with a zero or non-finite
+// direction, and a black or broken cube, get hard shadows and no texels.
+[[nodiscard]] ShadowStrata buildShadowStrata(std::span<const Light> lights, const CubeMap& cube);
 
 }  // namespace vem::render

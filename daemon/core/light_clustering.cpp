@@ -4,10 +4,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
-#include <nanoflann.hpp>
 #include <numbers>
 #include <utility>
 
+#include "core/direction_tree.h"
 #include "util/contract.h"
 
 namespace vem {
@@ -16,24 +16,6 @@ namespace {
 inline constexpr std::uint32_t kUnassigned = std::numeric_limits<std::uint32_t>::max();
 // Slack on the squared chord of the kd-tree search; the exact test on the dot product follows.
 inline constexpr double kChordSquaredSlack = 1e-9;
-
-// nanoflann dataset adaptor over unit directions.
-struct DirectionCloud {
-  const std::vector<glm::dvec3>& dirs;
-
-  [[nodiscard]] std::size_t kdtree_get_point_count() const { return dirs.size(); }
-  [[nodiscard]] double kdtree_get_pt(std::size_t index, std::size_t dim) const {
-    return dirs[index][glm::length_t(dim)];
-  }
-  template <class BoundingBox>
-  bool kdtree_get_bbox(BoundingBox& /*unused*/) const {
-    return false;
-  }
-};
-
-using DirectionTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, DirectionCloud>,
-                                        DirectionCloud, 3, std::uint32_t>;
 
 struct ClusterSum {
   std::uint32_t seed = 0;

@@ -160,8 +160,10 @@ TEST(RatioShading, GlossyUnderCompactSourcesKeepsFallingWithTheLightCount) {
 // Soft shadows (LightRenderOptions::softShadows): at N = 16 each light stands for a large part of
 // the sky, and its hard shadow on the plane was a sharp copy of the sphere's outline where the
 // reference has a penumbra. A diffuse sphere on a plane under city: the error against the
-// reference falls to under 0.8 of the hard shadows' (the bench measures 5.0 % to 3.4 % at
-// 160 x 120; docs/shading-by-ratio.md).
+// reference falls to under 0.6 of the hard shadows' (measured 0.50 with directions drawn from the
+// lights' strata; 0.73 with cones around the lights' directions, which this catches, as it does
+// cosines taken at the light's direction rather than the drawn one; the bench measures 4.8 % to
+// 1.5 % at 160 x 120 against 1 % references; docs/shading-by-ratio.md).
 TEST(RatioShading, SoftShadowsCutTheDiffuseErrorAtSixteenLights) {
   const EnvMap city = sharedHdri("city");
   const scene::Scene s =
@@ -176,7 +178,7 @@ TEST(RatioShading, SoftShadowsCutTheDiffuseErrorAtSixteenLights) {
   const double softError = render::compareImages(soft.image, reference.image).relativeRms;
   std::printf("diffuse under city, N = 16, by ratio: hard %.2f %%, soft %.2f %% (reference %.2f %%)\n",
               100.0 * hardError, 100.0 * softError, 100.0 * reference.relativeError);
-  EXPECT_LT(softError, 0.8 * hardError);  // measured 0.73
+  EXPECT_LT(softError, 0.6 * hardError);  // measured 0.50
 }
 
 // A light as small as a texel (a sun) keeps its hard shadow: when every light is the sun, the soft
