@@ -132,26 +132,6 @@ struct RatioSums {
   float specularBlend = 0.0F;  // t: ratio_s = mix(ratio_d, S_s / U_s, t)
 };
 
-// A 32-bit integer hash (xorshift-multiply rounds): the soft shadows' fixed random pattern.
-std::uint32_t hash32(std::uint32_t x) {
-  x ^= x >> 16U;
-  x *= 0x7feb352dU;
-  x ^= x >> 15U;
-  x *= 0x846ca68bU;
-  x ^= x >> 16U;
-  return x;
-}
-
-// Three numbers in [0, 1) from the hash of (pixel, light): a fixed pattern, so a frame does not
-// depend on the schedule.
-glm::vec3 uniformsOf(std::uint32_t pixel, std::uint32_t light) {
-  const std::uint32_t h1 = hash32(pixel * 0x9e3779b1U ^ hash32(light + 0x68e31da4U));
-  const std::uint32_t h2 = hash32(h1 ^ 0xb5297a4dU);
-  const std::uint32_t h3 = hash32(h2 ^ 0x1b56c4e9U);
-  constexpr float kScale = 1.0F / 16777216.0F;
-  return {float(h1 >> 8U) * kScale, float(h2 >> 8U) * kScale, float(h3 >> 8U) * kScale};
-}
-
 bool specularByRatio(const Frame& frame, const ShadingPoint& p) {
   const render::EnvironmentLighting& env = *frame.options.environment;
   const std::size_t materialIndex = p.hit.materialIndex;
@@ -177,7 +157,7 @@ RatioSums ratioSumsOf(const Frame& frame, const ShadingPoint& p, std::uint32_t p
     glm::vec3 wd = light.rgb * cosine;
     if (soft) {
       // One direction of the light's stratum, weighed by the stratum's power and its own cosine.
-      const glm::vec3 u = uniformsOf(pixel, i);
+      const glm::vec3 u = render::fixedUniforms(pixel, i);
       shadowDir = frame.strata->sample(i, light.dir, u.x, u.y, u.z);
       const float drawnCosine = glm::dot(p.normal, shadowDir);
       if (drawnCosine <= 0.0F) continue;  // this draw lies below the surface

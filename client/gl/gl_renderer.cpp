@@ -25,7 +25,8 @@ constexpr GLenum kCasterUnit = kEnvironmentUnit + 1;               // 14
 constexpr GLenum kIrradianceUnit = kCasterUnit + 1;                // 15
 constexpr GLenum kPrefilteredUnit = kIrradianceUnit + 1;           // 16
 constexpr GLenum kMirrorUnit = kPrefilteredUnit + 1;              // 17
-constexpr GLint kFragmentUnitsNeeded = GLint(kMirrorUnit) + 1;
+constexpr GLenum kDrawWeightUnit = kMirrorUnit + 1;               // 18
+constexpr GLint kFragmentUnitsNeeded = GLint(kDrawWeightUnit) + 1;
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -62,6 +63,23 @@ std::expected<LightingTarget, std::string> makeLightingTarget(int widthPx, int h
   return target;
 }
 
+// By slot, (weight rgb, draws): render/shadow_draws.h's weights, and each soft light's number of
+// draws at its first slot; one zero texel when the frame has no draws (a buffer is never empty).
+std::vector<float> drawWeightTexels(const render::ShadingLights& lights) {
+  if (lights.shadowDrawsOfDiffuse.empty()) return {0.0F, 0.0F, 0.0F, 0.0F};
+  std::vector<float> out;
+  out.reserve(4 * lights.shadowDrawWeights.size());
+  for (const glm::vec3& w : lights.shadowDrawWeights) out.insert(out.end(), {w.x, w.y, w.z, 0.0F});
+  for (std::size_t i = 0; i < lights.shadowDrawsOfDiffuse.size(); ++i) {
+    const std::uint32_t draws = lights.shadowDrawsOfDiffuse[i];
+    const std::int32_t slot = lights.shadowSlotOfDiffuse[i];
+    if (draws > 0 && slot >= 0 && 4 * std::size_t(slot) + 3 < out.size()) {
+      out[4 * std::size_t(slot) + 3] = float(draws);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 struct GlRenderer::Impl {
@@ -83,6 +101,10 @@ struct GlRenderer::Impl {
   // Each slot's caster direction (RGBA32F, xyz): a light shadowed through another light's map
   // looks it up in that caster's view, not its own.
   TextureBuffer casterDirs;
+  // Soft shadows in the maps (render/shadow_draws.h), by slot (RGBA32F): the draw's weight (rgb)
+  // and, at a soft light's first slot, its number of draws (a, 0 elsewhere). Uploaded every
+  // frame: the weights follow the cube map even when the directions do not.
+  TextureBuffer drawWeights;
   std::size_t shadowCount = 0;
   std::optional<OverlayPass> overlay;  // windows only (presentToWindow)
   MirrorOcclusion mirrors;             // what the mirror-like meshes' reflections hit
@@ -142,6 +164,7 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
                                              std::move(*target),
                                              GlVertexArray::create(),
                                              std::nullopt,
+                                             TextureBuffer(GL_RGBA32F),
                                              TextureBuffer(GL_RGBA32F),
                                              0,
                                              std::nullopt,
@@ -244,6 +267,9 @@ void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
   lighting.set("uShadowAtlasPx", float(atlas.atlasPx()));
   casterDirs.bind(kCasterUnit);
   lighting.set("uShadowCasterDirs", int(kCasterUnit));
+  drawWeights.bind(kDrawWeightUnit);
+  lighting.set("uShadowDrawWeights", int(kDrawWeightUnit));
+  lighting.set("uShadowDraws", frame.shadowDrawsOfDiffuse.empty() ? 0 : 1);
   lighting.set("uSceneCentre", bounds.centre());
   lighting.set("uShadowRadius", shadowFrameRadius(bounds));
   environment.bind(kEnvironmentUnit);
@@ -287,6 +313,7 @@ GlFrameStats GlRenderer::render(const scene::OrbitCamera& camera,
     peakFractions = render::peakFractionsOf(*ratio.lighting, *background, lights.diffuse.lights);
   }
   s.lights.upload(lights, peakFractions);
+  s.drawWeights.upload(std::span<const float>(drawWeightTexels(lights)));
   stats.backgroundUploaded = s.environment.update(background, backgroundVersion);
   s.environmentLighting.update(ratio.lighting, ratio.version);
   glBindFramebuffer(GL_FRAMEBUFFER, s.target.framebuffer.id());

@@ -16,7 +16,9 @@
 //
 // With a RatioShading, shading by ratio instead (issue 20): the model and its sums are
 // client/embree/light_renderer.h's, term for term, over the diffuse lights and with the shadow
-// maps' visibility; the glossy L/H sets are not read. The prefiltered cubes are read with
+// maps' visibility; the glossy L/H sets are not read. A soft light with draws
+// (ShadingLights::shadowDrawsOfDiffuse, render/shadow_draws.h) sums its maps' draws instead of its
+// one map. The prefiltered cubes are read with
 // GL_TEXTURE_CUBE_MAP_SEAMLESS (on for that pass only), as render::sampleCubeMapSeamless reads
 // them.
 #pragma once

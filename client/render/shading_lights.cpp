@@ -66,7 +66,9 @@ std::vector<std::uint32_t> shadowCastersOf(const LightSet& diffuse, std::size_t 
   return order;
 }
 
-std::uint64_t keyOf(std::span<const glm::vec3> dirs) {
+}  // namespace
+
+std::uint64_t shadowDirsKey(std::span<const glm::vec3> dirs) {
   std::uint64_t key = 1469598103934665603ULL ^ dirs.size();  // FNV-1a over the directions
   for (const glm::vec3& d : dirs) {
     for (float c : {d.x, d.y, d.z}) {
@@ -76,7 +78,6 @@ std::uint64_t keyOf(std::span<const glm::vec3> dirs) {
   return key;
 }
 
-}  // namespace
 
 LightingGeometry makeLightingGeometry() {
   return LightingGeometry{makeAngularRegions(), makeGlossyRegions()};
@@ -110,7 +111,7 @@ ShadingLights buildShadingLights(const LightSet& lights, const LightingGeometry&
     out.shadowSlotOfLow = nearestShadowSlots(out.glossy->low.lights, out.shadowDirs);
   }
   out.maxConeLights = std::max<std::size_t>(options.maxConeLights, 1);
-  out.lightsKey = keyOf(out.shadowDirs);
+  out.lightsKey = shadowDirsKey(out.shadowDirs);
   return out;
 }
 

@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "client/render/shadow_groups.h"
@@ -68,9 +69,18 @@ struct ShadingLights {
   std::vector<glm::vec3> shadowDirs;              // by slot: the direction of its map
   std::vector<std::int32_t> shadowSlotOfDiffuse;  // one per diffuse light
   std::vector<std::int32_t> shadowSlotOfLow;      // one per glossy->low light (empty without)
+  // Soft shadows in the maps (shadow_draws.h): per diffuse light, how many consecutive slots from
+  // its own hold directions drawn from its stratum of the sky (0: its map looks along its own
+  // direction, a hard shadow), and by slot the draw's weight (the stratum's power over the draws;
+  // 0 for a hard light's map). Both empty: every shadow is hard.
+  std::vector<std::uint32_t> shadowDrawsOfDiffuse;
+  std::vector<glm::vec3> shadowDrawWeights;
   std::size_t maxConeLights = 216;
   std::uint64_t lightsKey = 0;  // hash of shadowDirs
 };
+
+// The key of a list of shadow-map directions (FNV-1a over their bits): ShadingLights::lightsKey.
+[[nodiscard]] std::uint64_t shadowDirsKey(std::span<const glm::vec3> dirs);
 
 [[nodiscard]] ShadingLights buildShadingLights(const LightSet& lights,
                                                const LightingGeometry& geometry,

@@ -11,6 +11,58 @@
 #include "core/direction_tree.h"
 
 namespace vem::render {
+namespace {
+
+std::uint32_t hash32(std::uint32_t x) {
+  x ^= x >> 16U;
+  x *= 0x7feb352dU;
+  x ^= x >> 15U;
+  x *= 0x846ca68bU;
+  x ^= x >> 16U;
+  return x;
+}
+
+// A texel's place on a Z-order (Morton) curve over the plane tangent to the sphere at `dir`:
+// neighbours along the curve are neighbours on the sphere, so a band of a stratum's table is a
+// compact patch of it, and stratifying the draws over the table stratifies them in two dimensions.
+std::uint32_t zOrderOf(glm::vec3 texelDir, glm::vec3 t, glm::vec3 b) {
+  const auto quantised = [](float x) {
+    return std::uint32_t(std::clamp((x + 1.0F) * 0.5F, 0.0F, 1.0F) * 65535.0F);
+  };
+  const std::uint32_t x = quantised(glm::dot(texelDir, t));
+  const std::uint32_t y = quantised(glm::dot(texelDir, b));
+  std::uint32_t code = 0;
+  for (std::uint32_t bit = 0; bit < 16; ++bit) {
+    code |= ((x >> bit) & 1U) << (2U * bit) | ((y >> bit) & 1U) << (2U * bit + 1U);
+  }
+  return code;
+}
+
+void sortAlongZCurve(std::vector<std::uint32_t>::iterator first,
+                     std::vector<std::uint32_t>::iterator last,
+                     const std::vector<TexelSample>& texels, glm::vec3 lightDir) {
+  const glm::vec3 z = glm::normalize(lightDir);
+  const glm::vec3 helper = std::abs(z.y) < 0.9F ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  const glm::vec3 t = glm::normalize(glm::cross(helper, z));
+  const glm::vec3 b = glm::cross(z, t);
+  std::vector<std::uint64_t> keyed;  // (z-order << 32) | texel: one sort, ties by texel
+  keyed.reserve(std::size_t(last - first));
+  for (auto it = first; it != last; ++it) {
+    keyed.push_back(std::uint64_t(zOrderOf(texels[*it].dir, t, b)) << 32U | *it);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (const std::uint64_t k : keyed) *first++ = std::uint32_t(k & 0xffffffffU);
+}
+
+}  // namespace
+
+glm::vec3 fixedUniforms(std::uint32_t a, std::uint32_t b) {
+  const std::uint32_t h1 = hash32(a * 0x9e3779b1U ^ hash32(b + 0x68e31da4U));
+  const std::uint32_t h2 = hash32(h1 ^ 0xb5297a4dU);
+  const std::uint32_t h3 = hash32(h2 ^ 0x1b56c4e9U);
+  constexpr float kScale = 1.0F / 16777216.0F;
+  return {float(h1 >> 8U) * kScale, float(h2 >> 8U) * kScale, float(h3 >> 8U) * kScale};
+}
 
 glm::vec3 ShadowStrata::sample(std::size_t light, glm::vec3 lightDir, float u1, float u2,
                                float u3) const {
@@ -70,6 +122,7 @@ ShadowStrata buildShadowStrata(std::span<const Light> lights, const CubeMap& cub
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint32_t begin = out.offsets[i];
     const std::uint32_t end = out.offsets[i + 1];
+    sortAlongZCurve(out.texel.begin() + begin, out.texel.begin() + end, texels, lights[i].dir);
     if (!(weight[i] > 0.0) || !std::isfinite(weight[i])) {
       // No light to draw from: a hard shadow, and a uniform table that sample() never needs.
       for (std::uint32_t k = begin; k < end; ++k) out.cdf[k] = float(k - begin + 1) / float(end - begin);

@@ -10,8 +10,13 @@
 // stratum, with probability proportional to radiance x solid angle, and weighs it by the
 // stratum's power times the cosine there; the visible fraction of the weights over the drawn
 // directions is an unbiased estimate, per stratum, of the fraction of the stratum's irradiance
-// that reaches the point (its visibility-weighted integral over the unshadowed one), and the
-// renderer averages it over neighbouring pixels (embree/light_renderer.h).
+// that reaches the point (its visibility-weighted integral over the unshadowed one). Embree draws
+// per pixel and averages over neighbouring pixels (embree/light_renderer.h); OpenGL draws k
+// directions per light for the whole frame, one shadow map each (shadow_draws.h).
+// Within a stratum the texels are ordered along a Z curve over the plane tangent at the light, so
+// that a band of the table is a compact patch of sky: stratifying u1 (shadow_draws.h) then
+// stratifies the draws in two dimensions (the face-row order left errors of 0.031 of the
+// irradiance where the Z curve leaves 0.012, tests/gl/ratio_shading_test.cpp).
 //
 // A light whose stratum's light is compact keeps its hard shadow toward its own direction: a sun,
 // a lamp, a softbox's share. Compact means an effective solid angle under kSoftShadowMinSr, taken
@@ -19,7 +24,6 @@
 // the unit directions weighted by luminance x sr, 4 pi (1 - R), which is exactly the solid angle
 // of a uniformly bright cone (R = (1 + cos theta) / 2) and 0 for a single texel.
 //
-// Embree only: OpenGL's shadow maps look along one direction per light (gl/ has no soft shadows).
 #pragma once
 
 #include <cstddef>
@@ -60,6 +64,11 @@ struct ShadowStrata {
   [[nodiscard]] glm::vec3 sample(std::size_t light, glm::vec3 lightDir, float u1, float u2,
                                  float u3) const;
 };
+
+// Three numbers in [0, 1) from a fixed hash of (a, b) (xorshift-multiply rounds): the draws'
+// pattern, so a frame depends on neither the schedule nor a random state. Embree hashes (pixel,
+// light), the shadow maps (light id, draw).
+[[nodiscard]] glm::vec3 fixedUniforms(std::uint32_t a, std::uint32_t b);
 
 // The strata of `lights` over `cube` (at least one level). Lights with a zero or non-finite
 // direction, and a black or broken cube, get hard shadows and no texels.

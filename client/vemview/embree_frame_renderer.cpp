@@ -25,6 +25,7 @@ class EmbreeFrameRenderer final : public FrameRenderer {
                       embree::EmbreeScene scene, const render::LightingGeometry& geometry)
       : options_(options), environment_(plan), scene_(std::move(scene)), geometry_(geometry) {
     lightOptions_.cubeCoverage = plan.cubeMapCoverage;
+    lightOptions_.softShadows = plan.softShadows;
   }
 
   std::string name() const override {

@@ -31,6 +31,7 @@ struct RenderedFrame {
   render::LinearImage image;
   double renderMs = 0.0;          // the renderer's whole frame, readback included
   nlohmann::ordered_json timing;  // its own figures (pass times, maps rendered/reused...)
+  std::size_t strataShadowMaps = 0;  // OpenGL's soft shadows: maps along strata draws
 };
 
 class FrameRenderer {

@@ -1,13 +1,17 @@
 #include "client/vemview/gl_frame_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "client/gl/gl_context.h"
 #include "client/gl/gl_renderer.h"
 #include "client/render/image_files.h"
+#include "client/render/shadow_draws.h"
+#include "client/render/soft_shadows.h"
 #include "client/vemview/prefiltered_environment.h"
 
 namespace vem::view {
@@ -24,6 +28,7 @@ class GlFrameRenderer final : public FrameRenderer {
                   const scene::Scene& scene, std::unique_ptr<gl::GlContext> context,
                   std::unique_ptr<gl::GlRenderer> renderer)
       : options_(options),
+        softShadowMaps_(plan.softShadows ? plan.softShadowMaps : 0),
         materials_(scene.materials),
         environment_(plan),
         context_(std::move(context)),
@@ -48,8 +53,9 @@ class GlFrameRenderer final : public FrameRenderer {
     RenderedFrame frame;
     const PrefilteredEnvironment::Current environment = environment_.forCube(input.cube, materials_);
     if (environment.builtMs) frame.timing["prefilter_ms"] = *environment.builtMs;
+    const render::ShadingLights& shading = withSoftShadows(lights, input, frame);
     const gl::GlFrameStats stats =
-        renderer_->render(camera, lights, input.cube.get(), input.cubeVersion,
+        renderer_->render(camera, shading, input.cube.get(), input.cubeVersion,
                           gl::RatioShading{environment.lighting, environment.version});
     const auto readStart = std::chrono::steady_clock::now();
     frame.image = renderer_->readLinear();
@@ -95,6 +101,37 @@ class GlFrameRenderer final : public FrameRenderer {
   }
 
  private:
+  // With soft shadows, the frame's lights with the maps beyond N spent on the strata
+  // (render/shadow_draws.h), rebuilt only when the lights, their count or the cube map change
+  // (so unchanged lights keep their maps); otherwise `lights` itself.
+  const render::ShadingLights& withSoftShadows(const render::ShadingLights& lights,
+                                               const InputFrame& input, RenderedFrame& frame) {
+    if (softShadowMaps_ == 0 || !input.cube) return lights;
+    const SoftKey key{input.seq, input.cubeVersion, lights.diffuse.lights.size()};
+    if (!soft_ || softKey_ != key) {
+      const auto start = std::chrono::steady_clock::now();
+      soft_ = lights;
+      const render::ShadowStrata strata =
+          render::buildShadowStrata(lights.diffuse.lights, *input.cube);
+      const std::size_t budget = std::min(softShadowMaps_, renderer_->shadowMapCapacity());
+      (void)render::spendShadowMapsOnStrata(*soft_, strata, budget);
+      softKey_ = key;
+      frame.timing["soft_shadow_strata_ms"] = msSince(start);
+    }
+    std::size_t strata = 0;
+    for (const std::uint32_t draws : soft_->shadowDrawsOfDiffuse) strata += draws;
+    frame.strataShadowMaps = strata;
+    frame.timing["strata_shadow_maps"] = strata;
+    return *soft_;
+  }
+
+  struct SoftKey {
+    std::uint64_t seq = 0;
+    std::uint64_t cubeVersion = 0;
+    std::size_t lightCount = 0;
+    bool operator==(const SoftKey&) const = default;
+  };
+
   void saveScreenshot() {
     if (lastDisplay_.empty()) {
       return;
@@ -114,6 +151,9 @@ class GlFrameRenderer final : public FrameRenderer {
   }
 
   const ViewerOptions& options_;
+  std::size_t softShadowMaps_ = 0;  // the plan's, 0 without soft shadows
+  std::optional<render::ShadingLights> soft_;
+  SoftKey softKey_;
   std::vector<scene::Material> materials_;
   PrefilteredEnvironment environment_;
   std::unique_ptr<gl::GlContext> context_;
@@ -137,7 +177,8 @@ std::expected<std::unique_ptr<FrameRenderer>, std::string> makeGlFrameRenderer(
   glOptions.widthPx = options.widthPx;
   glOptions.heightPx = options.heightPx;
   glOptions.shadowMapPx = plan.shadowMapPx;
-  glOptions.maxShadowMaps = std::max<std::size_t>(plan.lighting.shadowedCount, 1);
+  glOptions.maxShadowMaps =
+      std::max<std::size_t>({plan.lighting.shadowedCount, plan.softShadowMaps, 1});
   glOptions.presentToWindow = !options.headless;
   glOptions.environmentCoverage = plan.cubeMapCoverage;
   glOptions.geometry = &geometry;

@@ -53,6 +53,12 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
   plan.cubeFacePx = request.cubeFacePx > 0 ? request.cubeFacePx : render::cubeFacePxFor(scene);
   plan.cubeMapCoverage = request.inputLayout;
   plan.targetFrameMs = request.targetFrameMs;
+  plan.softShadows = request.softShadows && plan.shadingByRatio && plan.shadowMaps;
+  plan.softShadowMaps =
+      plan.softShadows ? std::min<std::size_t>(request.shadowedCount, render::kMaxShadowMaps) : 0;
+  plan.softShadowReason = !request.softShadows || plan.softShadows ? ""
+                          : !plan.shadingByRatio ? "they need shading by ratio"
+                                                 : "no shadow maps";
   return plan;
 }
 
@@ -61,6 +67,7 @@ RenderPlan withShadowMapCapacity(RenderPlan plan, std::size_t capacity) {
     plan.shadowedAskedFor = plan.lighting.shadowedCount;
     plan.lighting.shadowedCount = capacity;
   }
+  plan.softShadowMaps = std::min(plan.softShadowMaps, capacity);
   return plan;
 }
 
@@ -89,6 +96,14 @@ std::string RenderPlan::describe() const {
                                          : "no prefiltered cube: no glossy material");
   } else if (!ratioReason.empty()) {
     text += fmt::format(", shading by the lights ({})", ratioReason);
+  }
+  if (softShadows) {
+    text += fmt::format(
+        ", soft shadows (each light's stratum of the sky; OpenGL: up to {} maps, those beyond "
+        "N drawn from the strata)",
+        softShadowMaps);
+  } else if (!softShadowReason.empty()) {
+    text += fmt::format(", hard shadows (soft: {})", softShadowReason);
   }
   if (lighting.clusterBudget > 0) {
     text += fmt::format(", clustering Q {}", lighting.clusterBudget);

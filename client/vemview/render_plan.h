@@ -13,6 +13,10 @@
 //   shadowedCount is cut to what its atlas holds (withShadowMapCapacity).
 // - shadingByRatio (--shading ratio, with a cube map in the input): the irradiance cube only with a
 //   diffuse material, prefiltered cubes only with a glossy one, and no L/H sets.
+// - softShadows (--soft-shadows, by ratio, with shadow maps): each light that stands for a wide
+//   part of the sky casts that part's soft shadow (render/soft_shadows.h). Embree draws a
+//   direction per pixel; OpenGL spends the maps beyond N, up to S as asked (softShadowMaps), on
+//   directions drawn per frame (render/shadow_draws.h), so with S <= N it changes nothing there.
 // Per frame (decideFrame):
 // - lights unchanged since the last drawn frame (same input seq): shadow maps are reused;
 // - lights, camera and scene all unchanged: nothing is redrawn (the last image stands).
@@ -42,6 +46,7 @@ struct PlanRequest {
   bool inputHasCubeMaps = true;         // a light file has none
   MapLayout inputLayout = MapLayout::Hemisphere;
   bool shadingByRatio = false;  // --shading ratio
+  bool softShadows = false;     // --soft-shadows
 };
 
 struct RenderPlan {
@@ -67,6 +72,9 @@ struct RenderPlan {
   bool irradianceCube = false;
   bool prefilteredCubes = false;
   std::string ratioReason;
+  bool softShadows = false;
+  std::size_t softShadowMaps = 0;  // OpenGL's maps with soft shadows: S as asked (0 without)
+  std::string softShadowReason;    // why not, when asked for and off
 
   [[nodiscard]] std::string describe() const;  // one line for the start and the status line
 };
@@ -75,7 +83,8 @@ struct RenderPlan {
 
 // The plan for a renderer that holds at most `capacity` shadow maps (the OpenGL atlas is bounded
 // by GL_MAX_TEXTURE_SIZE): S becomes min(S, capacity), so the lights without a map of their own
-// take their nearest caster's, and what is reported as shadowed is what is shadowed.
+// take their nearest caster's, and what is reported as shadowed is what is shadowed; the soft
+// shadows' maps are cut likewise.
 [[nodiscard]] RenderPlan withShadowMapCapacity(RenderPlan plan, std::size_t capacity);
 
 struct FrameState {

@@ -34,6 +34,9 @@ std::string lightCountsText(const LightCounts& counts) {
   text += counts.shadowMapsPlanned == 0
               ? std::string(" | no shadow maps")
               : fmt::format(" | shadow maps {} of {}", counts.shadowMaps, counts.shadowMapsPlanned);
+  if (counts.strataShadowMaps > 0) {
+    text += fmt::format(" (soft: {} maps along strata draws)", counts.strataShadowMaps);
+  }
   return text;
 }
 

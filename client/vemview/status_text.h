@@ -21,6 +21,7 @@ struct LightCounts {
   std::size_t clusters = 0;           // the clusters they were merged into (0: not clustered)
   std::size_t shadowMaps = 0;         // lights drawn with a shadow map of their own
   std::size_t shadowMapsPlanned = 0;  // S of the plan (0: the plan has no shadow maps)
+  std::size_t strataShadowMaps = 0;   // soft shadows: the maps that look along strata draws
 };
 
 // The counts of a frame's shading lights. clusteredFrom: when its diffuse lights are clusters

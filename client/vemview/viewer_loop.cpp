@@ -53,6 +53,7 @@ PlanRequest requestFor(const ViewerOptions& o, const InputFacts& facts) {
   request.cubeFacePx = o.cubeFacePx;
   request.regions = o.regions;
   request.shadingByRatio = o.shading == ShadingKind::Ratio;
+  request.softShadows = o.softShadows;
   request.clusterBudget = o.clusterBudget;
   request.backgroundWanted = o.background;
   request.targetFrameMs = o.targetFrameMs;
@@ -156,9 +157,10 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   record.timing["shadowed"] = v.shading.shadowDirs.size();
   record.timing["shading_lights_ms"] = shadingMs;
   record.timing["render_ms"] = decision.redraw ? v.last.renderMs : 0.0;
-  v.status.add(
-      decision.redraw, v.last.renderMs,
-      lightCountsOf(v.shading, clusteredFrom(v, *frame, count), v.plan.lighting.shadowedCount));
+  LightCounts counts =
+      lightCountsOf(v.shading, clusteredFrom(v, *frame, count), v.plan.lighting.shadowedCount);
+  counts.strataShadowMaps = v.last.strataShadowMaps;
+  v.status.add(decision.redraw, v.last.renderMs, counts);
   v.renderer->present(tone, v.status.overlay());
   if (v.writer) {
     if (auto written = v.writer->write(record, v.last.image, tone); !written) {

@@ -110,6 +110,10 @@ void addLightingOptions(CLI::App& app, ViewerOptions& o) {
                      "prefiltered environment, shadowed by the lights' ratio)"),
       {{"lights", ShadingKind::Lights}, {"ratio", ShadingKind::Ratio}})
       ->default_str("lights");
+  app.add_flag("--soft-shadows", o.softShadows,
+               "With --shading ratio: a light that stands for a wide part of the sky casts that "
+               "part's soft shadow (Embree: a ray per light and pixel; OpenGL: the shadow maps "
+               "beyond N, up to --shadowed, look along directions drawn from the lights' parts)");
   app.add_option("--cluster", o.clusterBudget, "Cluster the lights toward about Q (0: off)")
       ->check(CLI::Range(0, 65536));
   app.add_option("--target-ms", o.targetFrameMs,
@@ -201,6 +205,10 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
   if (o.shading == ShadingKind::Ratio && o.renderer == RendererKind::Reference) {
     std::cerr << "vemview: error: --shading ratio is a way of shading with the lights: give it "
                  "--renderer gl or embree, not reference (which integrates the map itself)\n";
+    return std::unexpected(cli::kExitUsage);
+  }
+  if (o.softShadows && o.shading != ShadingKind::Ratio) {
+    std::cerr << "vemview: error: --soft-shadows shades by ratio: give it --shading ratio too\n";
     return std::unexpected(cli::kExitUsage);
   }
   if (o.headless && o.frames == 0) {

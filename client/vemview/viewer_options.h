@@ -38,6 +38,7 @@ struct ViewerOptions {
   int cubeFacePx = 0;  // the cube map's level 0 (a mirror's reflection is this sharp); 0: the plan's
   bool regions = true;
   ShadingKind shading = ShadingKind::Lights;
+  bool softShadows = false;  // --soft-shadows (by ratio)
   int clusterBudget = 128;
   std::optional<double> targetFrameMs;
   bool background = false;

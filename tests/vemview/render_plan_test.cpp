@@ -107,6 +107,37 @@ TEST(RenderPlan, RatioShadingWithoutCubeMapsSaysWhyItShadesByTheLights) {
             std::string::npos);
 }
 
+// Soft shadows: OpenGL may spend S as asked (not min(S, N)) on the strata, within the atlas; they
+// need shading by ratio and a scene that can shadow itself, and say why not otherwise.
+TEST(RenderPlan, SoftShadowsKeepTheMapsAskedForBeyondNAndSayWhyWhenOff) {
+  PlanRequest request;
+  request.lightCount = 16;
+  request.shadowedCount = 256;
+  request.shadingByRatio = true;
+  request.softShadows = true;
+  const RenderPlan plan = planFor(sphereOnPlane(scene::Material{}), request);
+  EXPECT_TRUE(plan.softShadows);
+  EXPECT_EQ(plan.lighting.shadowedCount, 16U);  // the lights' own maps
+  EXPECT_EQ(plan.softShadowMaps, 256U);
+  EXPECT_NE(plan.describe().find("soft shadows"), std::string::npos) << plan.describe();
+  EXPECT_EQ(withShadowMapCapacity(plan, 100).softShadowMaps, 100U);
+
+  request.shadingByRatio = false;
+  const RenderPlan byLights = planFor(sphereOnPlane(scene::Material{}), request);
+  EXPECT_FALSE(byLights.softShadows);
+  EXPECT_EQ(byLights.softShadowMaps, 0U);
+  EXPECT_NE(byLights.describe().find("hard shadows (soft: they need shading by ratio)"),
+            std::string::npos)
+      << byLights.describe();
+
+  request.shadingByRatio = true;
+  request.shadowedCount = 0;
+  EXPECT_NE(planFor(sphereOnPlane(scene::Material{}), request)
+                .describe()
+                .find("hard shadows (soft: no shadow maps)"),
+            std::string::npos);
+}
+
 TEST(RenderPlan, LoneConvexObjectGetsNoShadowMaps) {
   scene::Scene s;
   s.materials = {scene::Material{}};

@@ -34,6 +34,17 @@ std::vector<nlohmann::json> jsonLines(const fs::path& path) {
   return lines;
 }
 
+// sum |a - b| / sum |b| over every value of two images of one size (0 when b is black).
+double relativeDifference(const vem::render::LinearImage& a, const vem::render::LinearImage& b) {
+  double differenceSum = 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < b.rgb.size(); ++i) {
+    differenceSum += std::abs(double(a.rgb[i]) - double(b.rgb[i]));
+    sum += std::abs(double(b.rgb[i]));
+  }
+  return sum > 0.0 ? differenceSum / sum : 0.0;
+}
+
 const std::string kSmall = " --headless --width 64 --height 48 --count 16 --shadowed 8 ";
 
 class VemviewCli : public vem::testing::VemviewProcessTest {
@@ -141,14 +152,7 @@ TEST_F(VemviewCli, CubeFaceSizeReachesTheCubeMapNotOnlyThePlanLine) {
     ASSERT_TRUE(exr.has_value()) << exr.error();
     images.push_back(std::move(*exr));
   }
-  double differenceSum = 0.0;
-  double sum = 0.0;
-  for (std::size_t i = 0; i < images[0].rgb.size(); ++i) {
-    differenceSum += std::abs(double(images[0].rgb[i]) - double(images[1].rgb[i]));
-    sum += std::abs(double(images[1].rgb[i]));
-  }
-  ASSERT_GT(sum, 0.0);
-  EXPECT_GT(differenceSum / sum, 0.01);  // an 8 px sky is a blur of the 256 px one
+  EXPECT_GT(relativeDifference(images[0], images[1]), 0.01);  // an 8 px sky blurs the 256 px one
   expectRefused(kSmall + "--cube-face-px 1024", "--cube-face-px", 2);
 }
 
@@ -158,6 +162,46 @@ TEST_F(VemviewCli, RatioShadingPrefiltersOnceAndSaysSoInThePlan) {
     fs::remove_all(dir_ / "out");
     expectRatioShadingPrefiltersOnce(renderer);
   }
+}
+
+// --soft-shadows reaches both renderers, not only the plan line: each image differs from the hard
+// shadows' one. OpenGL draws the maps beyond N along the strata (16 lights, up to 64 maps), says
+// so in its status and timing, and keeps them while only the camera moves.
+TEST_F(VemviewCli, SoftShadowsReachBothRenderersAndOpenGlKeepsItsStrataMapsWhileTheCameraMoves) {
+  for (const std::string renderer : {"gl", "embree"}) {
+    SCOPED_TRACE(renderer);
+    std::vector<vem::render::LinearImage> images;
+    for (const std::string soft : {"", " --soft-shadows"}) {
+      const std::string out = path(renderer + (soft.empty() ? "-hard" : "-soft"));
+      const CommandRun r = run(" --headless --width 64 --height 48 --scene spheres --count 16 "
+                               "--shadowed 64 --renderer " +
+                               renderer + " --shading ratio --frames 2 --orbit 5 --no-png" +
+                               soft + " --out " + out);
+      ASSERT_EQ(r.exitCode, 0) << r.err;
+      auto exr = vem::render::loadLinearExr(fs::path(out) / "frame-000000.exr");
+      ASSERT_TRUE(exr.has_value()) << exr.error();
+      images.push_back(std::move(*exr));
+      if (soft.empty()) continue;
+      EXPECT_NE(r.err.find(", soft shadows (each light's stratum of the sky; OpenGL: up to 64 maps"),
+                std::string::npos)
+          << r.err;
+      if (renderer != "gl") continue;
+      EXPECT_NE(r.err.find("maps along strata draws)"), std::string::npos) << r.err;
+      const std::vector<nlohmann::json> lines = jsonLines(fs::path(out) / "timing.jsonl");
+      ASSERT_EQ(lines.size(), 2U);
+      ASSERT_TRUE(lines[0].contains("strata_shadow_maps"));
+      const int strataMaps = lines[0]["strata_shadow_maps"].get<int>();
+      EXPECT_GT(strataMaps, 16);
+      EXPECT_LE(lines[0]["shadow_maps_rendered"].get<int>(), 64);
+      EXPECT_GE(lines[0]["shadow_maps_rendered"].get<int>(), strataMaps);
+      EXPECT_TRUE(lines[0].contains("soft_shadow_strata_ms"));
+      EXPECT_FALSE(lines[1].contains("soft_shadow_strata_ms"));  // the same lights: not redrawn
+      EXPECT_EQ(lines[1]["shadow_maps_reused"].get<int>(),
+                lines[0]["shadow_maps_rendered"].get<int>());
+    }
+    EXPECT_GT(relativeDifference(images[1], images[0]), 0.002);
+  }
+  expectRefused(kSmall + "--soft-shadows --out " + path("out"), "--shading ratio", 2);
 }
 
 TEST_F(VemviewCli, RatioShadingOnTheReferenceRendererIsAUsageError) {

@@ -32,7 +32,8 @@ struct MaterialStudyOptions {
   int glFrames = 3;   // timed OpenGL frames per point (the median is reported)
   std::size_t glShadowMaps = 256;  // OpenGL: min(N, this) shadow maps, shared by group below N
   int cubeFacePx = 0;  // the cube map both renderers read (level 0); 0: render::cubeFacePxFor
-  // Embree by ratio: soft shadows (render/soft_shadows.h); OpenGL has none yet (needs gl = false).
+  // By ratio: soft shadows (render/soft_shadows.h; OpenGL's from the spare maps,
+  // render/shadow_draws.h).
   bool softShadows = false;
   std::vector<std::string> materials;  // names of materialStudyMaterials(); empty: all
   std::string command;                 // for the report

@@ -94,7 +94,7 @@ int parse(int argc, char** argv, BenchOptions& o) {
   app.add_option("--gl-frames", o.glFrames, "timed OpenGL frames per point")
       ->check(CLI::Range(1, 100));
   app.add_option("--embree-frames", o.embreeFrames)->check(CLI::Range(1, 100));
-  CLI::Option* noGl = app.add_flag("--no-gl", o.noGl, "Embree only (no OpenGL context)");
+  app.add_flag("--no-gl", o.noGl, "Embree only (no OpenGL context)");
   app.add_flag("--materials", o.materials,
                "the material study of issue 20 (a sphere on a plane, one material at a time, "
                "shading by the lights and by ratio) instead of the sweeps; writes --table");
@@ -111,9 +111,9 @@ int parse(int argc, char** argv, BenchOptions& o) {
                  "(default: as vemview's plan, 512 for the mirror, else 128)")
       ->check(CLI::Range(8, 512));
   app.add_flag("--soft-shadows", o.softShadows,
-               "with --materials --no-gl: Embree by ratio, each light casts its cone's soft "
-               "shadow (render/soft_shadows.h; OpenGL has none yet)")
-      ->needs(noGl);
+               "with --materials: by ratio, soft lights draw their shadows from their strata of "
+               "the sky (render/soft_shadows.h): Embree a direction per pixel, OpenGL the spare "
+               "maps when N < --gl-shadow-maps (render/shadow_draws.h)");
   app.add_flag("--list-maps", o.listMaps, "print how concentrated each HDRI's light is, and exit");
   app.add_option("--sweeps", o.sweeps, "the sweeps to run, e.g. ad (study_sweeps.h)");
   app.add_option("--table", o.table, "write the study (markdown) to this file");
