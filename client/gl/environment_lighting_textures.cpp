@@ -16,9 +16,12 @@ void EnvironmentLightingTextures::update(const render::EnvironmentLighting* ligh
   version_ = version;
   irradiance_.update(lighting->irradiance.levels.empty() ? nullptr : &lighting->irradiance,
                      version);
+  const bool filtered = lighting->specularModel == render::SpecularModel::FilteredSampling;
+  clipped_.update(filtered && !lighting->clipped.levels.empty() ? &lighting->clipped : nullptr,
+                  version);
   specular_.resize(lighting->specular.size());
   for (std::size_t m = 0; m < lighting->specular.size(); ++m) {
-    if (!lighting->specular[m]) {
+    if (!lighting->specular[m] || filtered) {
       specular_[m].reset();
       continue;
     }
@@ -32,12 +35,24 @@ void EnvironmentLightingTextures::bindMaterial(const GlProgram& program, std::si
   irradiance_.bind(irradianceUnit);
   program.set("uIrradiance", int(irradianceUnit));
   program.set("uHasIrradiance", irradiance_.present() ? 1 : 0);
-  const bool specular = lighting_ != nullptr && materialIndex < specular_.size() &&
-                        specular_[materialIndex].has_value();
+  const bool filtered = lighting_ != nullptr &&
+                        lighting_->specularModel == render::SpecularModel::FilteredSampling;
+  const bool specular =
+      lighting_ != nullptr && materialIndex < lighting_->specular.size() &&
+      lighting_->specular[materialIndex].has_value() &&
+      (filtered ? clipped_.present()
+                : materialIndex < specular_.size() && specular_[materialIndex].has_value());
   program.set("uSpecularByRatio", specular ? 1 : 0);
   program.set("uPrefiltered", int(specularUnit));
+  program.set("uFilteredSamples", specular && filtered ? render::kFilteredSamples : 0);
   if (!specular) {
     EnvironmentCube::unbind(specularUnit);
+    return;
+  }
+  if (filtered) {
+    clipped_.bind(specularUnit);
+    program.set("uFilteredFacePx", float(lighting_->clipped.levels.front().facePx));
+    program.set("uFilteredTopLevel", float(lighting_->clipped.levels.size() - 1));
     return;
   }
   specular_[materialIndex]->bind(specularUnit);

@@ -1,8 +1,9 @@
 // EnvironmentLightingTextures: render::EnvironmentLighting (issue 20, shading by ratio) as the
-// lighting shader reads it: the irradiance cube and each glossy material's prefiltered cube as
-// one-level RGB32F cube maps (EnvironmentCube), read with seamless filtering as
-// render::sampleCubeMapSeamless reads them on the CPU, and each material's directional-albedo
-// table as two uniform arrays (scale, bias) of render::kAlbedoTableSize floats.
+// lighting shader reads it, RGB32F cube maps (EnvironmentCube) read with seamless filtering as
+// render::sampleCubeMapSeamless reads them on the CPU: the irradiance cube; with filtered
+// importance sampling (the default), the clipped environment with its chain, one for every glossy
+// material; with the split sum, each glossy material's prefiltered cube and its
+// directional-albedo table as two uniform arrays (scale, bias) of render::kAlbedoTableSize floats.
 // Re-uploaded only when the caller's version changes (a new cube map).
 #pragma once
 
@@ -23,7 +24,8 @@ class EnvironmentLightingTextures {
   void update(const render::EnvironmentLighting* lighting, std::uint64_t version);
   [[nodiscard]] bool present() const { return lighting_ != nullptr; }
   // Sets the ratio uniforms of `program` (in use) for one material: the irradiance cube on
-  // `irradianceUnit`, the material's prefiltered cube on `specularUnit`, its albedo table.
+  // `irradianceUnit`, on `specularUnit` the clipped environment (filtered importance sampling) or
+  // the material's prefiltered cube and its albedo table (the split sum).
   void bindMaterial(const GlProgram& program, std::size_t materialIndex, GLenum irradianceUnit,
                     GLenum specularUnit) const;
 
@@ -31,6 +33,7 @@ class EnvironmentLightingTextures {
   const render::EnvironmentLighting* lighting_ = nullptr;
   std::optional<std::uint64_t> version_;
   EnvironmentCube irradiance_;
+  EnvironmentCube clipped_;  // filtered importance sampling
   std::vector<std::optional<EnvironmentCube>> specular_;  // per material
 };
 

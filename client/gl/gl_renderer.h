@@ -18,9 +18,9 @@
 // client/embree/light_renderer.h's, term for term, over the diffuse lights and with the shadow
 // maps' visibility; the glossy L/H sets are not read. A soft light with draws
 // (ShadingLights::shadowDrawsOfDiffuse, render/shadow_draws.h) sums its maps' draws instead of its
-// one map. The prefiltered cubes are read with
-// GL_TEXTURE_CUBE_MAP_SEAMLESS (on for that pass only), as render::sampleCubeMapSeamless reads
-// them.
+// one map. The environment's cubes (irradiance, the clipped environment or the split sum's
+// prefiltered cubes) are read with GL_TEXTURE_CUBE_MAP_SEAMLESS (on for that pass only), as
+// render::sampleCubeMapSeamless reads them.
 #pragma once
 
 #include <cstddef>

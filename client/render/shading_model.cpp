@@ -37,10 +37,6 @@ glm::vec3 blinnLobe(const scene::Material& m, glm::vec3 n, glm::vec3 wo, glm::ve
   return m.specularAlbedo * ((m.exponent + 8.0F) / (8.0F * kPi) * std::pow(cosH, m.exponent));
 }
 
-float smithG1(float cosV, float a2) {
-  return 2.0F * cosV / (cosV + std::sqrt(a2 + (1.0F - a2) * cosV * cosV));
-}
-
 glm::vec3 schlick(glm::vec3 f0, float cosine) {
   const float m = 1.0F - std::clamp(cosine, 0.0F, 1.0F);
   const float m5 = m * m * m * m * m;
@@ -59,6 +55,10 @@ glm::vec3 ggxLobe(const scene::Material& m, glm::vec3 n, glm::vec3 wo, glm::vec3
 }
 
 }  // namespace
+
+float smithG1(float cosV, float a2) {
+  return 2.0F * cosV / (cosV + std::sqrt(a2 + (1.0F - a2) * cosV * cosV));
+}
 
 glm::vec3 diffuseBrdf(const scene::Material& material) { return material.diffuseAlbedo / kPi; }
 

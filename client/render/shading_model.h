@@ -23,6 +23,9 @@ namespace vem::render {
 // roughness^2): alpha^2 / (pi ((n . h)^2 (alpha^2 - 1) + 1)^2); the integral of D (n . h) over
 // the hemisphere of h is 1.
 [[nodiscard]] float ggxDistribution(float cosHalf, float alphaSquared);
+// Smith's masking G1 for GGX at cosV = n . v (> 0): 2 cosV / (cosV + sqrt(alpha^2 + (1 - alpha^2)
+// cosV^2)); the GGX lobe's G is G1(n . wi) G1(n . wo).
+[[nodiscard]] float smithG1(float cosV, float alphaSquared);
 // wo mirrored about n: 2 (n . wo) n - wo.
 [[nodiscard]] glm::vec3 reflectedDirection(glm::vec3 n, glm::vec3 wo);
 // The fraction of a uniform environment a mirror-like material reflects toward wo (its directional

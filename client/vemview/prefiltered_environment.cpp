@@ -8,7 +8,7 @@ PrefilteredEnvironment::PrefilteredEnvironment(const RenderPlan& plan) {
   if (!plan.shadingByRatio) return;
   options_ = render::EnvironmentLightingOptions{};
   options_->diffuse = plan.irradianceCube;
-  options_->specular = plan.prefilteredCubes;
+  options_->specular = plan.glossyEnvironment;
   options_->peakFactor = render::peakFactorFor(plan.lighting.lightCount);
 }
 

@@ -1,8 +1,8 @@
 // PrefilteredEnvironment: the render::EnvironmentLighting of the frames' cube map for shading by
 // ratio (issue 20), shared by the OpenGL and Embree frame renderers. Built only when the cube map
 // changes (inputs hand out the same shared cube until a new one arrives) and only with the parts
-// the render plan asks for (no irradiance cube without a diffuse material, no prefiltered cubes
-// without a glossy one).
+// the render plan asks for (no irradiance cube without a diffuse material, no clipped environment
+// for the glossy lobes without a glossy one).
 #pragma once
 
 #include <cstdint>

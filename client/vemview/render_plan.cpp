@@ -17,7 +17,7 @@ RenderPlan planFor(const scene::Scene& scene, const PlanRequest& request) {
       const glm::vec3 kd = scene.materials.at(mesh.material).diffuseAlbedo;
       return mesh.triangleCount() > 0 && std::max({kd.x, kd.y, kd.z}) > 0.0F;
     });
-    plan.prefilteredCubes = std::ranges::any_of(scene.meshes, [&](const scene::Mesh& mesh) {
+    plan.glossyEnvironment = std::ranges::any_of(scene.meshes, [&](const scene::Mesh& mesh) {
       const scene::Material& m = scene.materials.at(mesh.material);
       return mesh.triangleCount() > 0 && m.glossy() && !m.mirrorLike();
     });
@@ -92,8 +92,9 @@ std::string RenderPlan::describe() const {
     text += fmt::format(", shading by ratio ({}, {})",
                         irradianceCube ? "irradiance cube: a diffuse material"
                                        : "no irradiance cube: no diffuse material",
-                        prefilteredCubes ? "prefiltered cubes: a glossy material"
-                                         : "no prefiltered cube: no glossy material");
+                        glossyEnvironment
+                            ? "clipped environment for the glossy lobes: a glossy material"
+                            : "no glossy environment: no glossy material");
   } else if (!ratioReason.empty()) {
     text += fmt::format(", shading by the lights ({})", ratioReason);
   }

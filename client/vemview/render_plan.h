@@ -12,7 +12,8 @@
 //   (scene::canCastShadows); the atlas is not even allocated otherwise. Once the renderer exists,
 //   shadowedCount is cut to what its atlas holds (withShadowMapCapacity).
 // - shadingByRatio (--shading ratio, with a cube map in the input): the irradiance cube only with a
-//   diffuse material, prefiltered cubes only with a glossy one, and no L/H sets.
+//   diffuse material, the clipped environment for the glossy lobes only with a glossy one, and no
+//   L/H sets.
 // - softShadows (--soft-shadows, by ratio, with shadow maps): each light that stands for a wide
 //   part of the sky casts that part's soft shadow (render/soft_shadows.h). Embree draws a
 //   direction per pixel; OpenGL spends the maps beyond N, up to S as asked (softShadowMaps), on
@@ -67,10 +68,11 @@ struct RenderPlan {
   MapLayout cubeMapCoverage = MapLayout::Sphere;
   // Shading by ratio: the prefiltered environment (render/environment_lighting.h), built when the
   // cube map changes, only for what the materials use: the irradiance cube when a material has a
-  // diffuse albedo, a prefiltered cube per glossy material that is not mirror-like. No L/H pass.
+  // diffuse albedo, the clipped environment with its chain when a material is glossy and not
+  // mirror-like (filtered importance sampling, render/environment_lighting.h). No L/H pass.
   bool shadingByRatio = false;
   bool irradianceCube = false;
-  bool prefilteredCubes = false;
+  bool glossyEnvironment = false;
   std::string ratioReason;
   bool softShadows = false;
   std::size_t softShadowMaps = 0;  // OpenGL's maps with soft shadows: S as asked (0 without)

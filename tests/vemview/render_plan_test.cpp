@@ -83,14 +83,14 @@ TEST(RenderPlan, RatioShadingPrefiltersOnlyWhatTheMaterialsUseAndDropsTheLHPass)
   EXPECT_TRUE(diffuse.shadingByRatio);
   EXPECT_TRUE(diffuse.cubeMap);  // the environment it prefilters
   EXPECT_TRUE(diffuse.irradianceCube);
-  EXPECT_FALSE(diffuse.prefilteredCubes);  // no glossy material: no specular cube
+  EXPECT_FALSE(diffuse.glossyEnvironment);  // no glossy material: no specular cube
   scene::Material metal = glossyMaterial();
   metal.diffuseAlbedo = glm::vec3(0.0F);
   scene::Scene metalOnly = sphereOnPlane(metal);
   metalOnly.meshes.erase(metalOnly.meshes.begin());  // no plane: no diffuse material left
   const RenderPlan glossy = planFor(metalOnly, request);
   EXPECT_FALSE(glossy.irradianceCube);
-  EXPECT_TRUE(glossy.prefilteredCubes);
+  EXPECT_TRUE(glossy.glossyEnvironment);
   EXPECT_FALSE(glossy.glossyPass);
   EXPECT_FALSE(glossy.lighting.glossyPass);
   EXPECT_NE(glossy.describe().find("shading by ratio"), std::string::npos);

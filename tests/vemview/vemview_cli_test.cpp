@@ -68,7 +68,8 @@ class VemviewCli : public vem::testing::VemviewProcessTest {
     const CommandRun r = run(kSmall + "--scene default --renderer " + renderer +
                              " --shading ratio --frames 2 --orbit 5 --out " + path("out"));
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.err.find("shading by ratio (irradiance cube: a diffuse material, prefiltered cubes: "
+    EXPECT_NE(r.err.find("shading by ratio (irradiance cube: a diffuse material, clipped "
+                         "environment for the glossy lobes: "
                          "a glossy material)"),
               std::string::npos)
         << r.err;

@@ -39,8 +39,13 @@ uniform int uHasEnvironment;
 uniform int uRatio;
 uniform samplerCube uIrradiance;  // E(n)
 uniform int uHasIrradiance;
-uniform samplerCube uPrefiltered;  // the material's P(R)
-uniform int uSpecularByRatio;      // the material has a prefiltered cube
+uniform samplerCube uPrefiltered;  // the clipped environment (filtered sampling), or P(R)
+// render::kFilteredSamples: filtered importance sampling of uPrefiltered, the clipped environment
+// with its chain (render/environment_lighting.h); 0: the split sum, P(R) times the albedo table.
+uniform int uFilteredSamples;
+uniform float uFilteredFacePx;    // its level 0's face
+uniform float uFilteredTopLevel;  // its last level
+uniform int uSpecularByRatio;      // the material has a specular environment
 uniform float uAlbedoScale[32];    // render::kAlbedoTableSize entries of rho = F0 scale + bias
 uniform float uAlbedoBias[32];
 uniform float uMinEffectiveLights;
@@ -135,6 +140,86 @@ vec3 directionalAlbedo(float cosNormalEye) {
   float scale = mix(uAlbedoScale[i0], uAlbedoScale[i1], w);
   float bias = mix(uAlbedoBias[i0], uAlbedoBias[i1], w);
   return uSpecularAlbedo * scale + vec3(bias);
+}
+
+// environment_lighting.cpp's around: a direction at polar cosine cosTheta and azimuth phi about z.
+vec3 aroundAxis(vec3 z, float cosTheta, float phi) {
+  vec3 helper = abs(z.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  vec3 t = normalize(cross(helper, z));
+  vec3 b = cross(z, t);
+  float sinTheta = sqrt(max(0.0, 1.0 - cosTheta * cosTheta));
+  return normalize(sinTheta * cos(phi) * t + sinTheta * sin(phi) * b + cosTheta * z);
+}
+
+// environment_lighting.cpp's sampleVisibleGgx: GGX by its distribution of visible normals.
+vec4 sampleVisibleGgx(vec3 n, vec3 wo, float u1, float u2) {
+  float a = uRoughness * uRoughness;
+  float a2 = a * a;
+  vec3 helper = abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  vec3 t = normalize(cross(helper, n));
+  vec3 b = cross(n, t);
+  float cosO = dot(n, wo);
+  if (cosO <= 0.0) return vec4(n, 0.0);
+  vec3 v = normalize(vec3(a * dot(wo, t), a * dot(wo, b), cosO));
+  float lengthSquared = v.x * v.x + v.y * v.y;
+  vec3 t1 = lengthSquared > 0.0 ? vec3(-v.y, v.x, 0.0) / sqrt(lengthSquared) : vec3(1.0, 0.0, 0.0);
+  vec3 t2 = cross(v, t1);
+  float r = sqrt(u1);
+  float phi = 2.0 * kPi * u2;
+  float p1 = r * cos(phi);
+  float s = 0.5 * (1.0 + v.z);
+  float p2 = (1.0 - s) * sqrt(max(0.0, 1.0 - p1 * p1)) + s * r * sin(phi);
+  vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * v;
+  vec3 hLocal = normalize(vec3(a * nh.x, a * nh.y, max(0.0, nh.z)));
+  vec3 h = hLocal.x * t + hLocal.y * b + hLocal.z * n;
+  float woH = dot(wo, h);
+  if (woH <= 0.0) return vec4(h, 0.0);
+  float density = smithG1(cosO, a2) * ggxD(max(0.0, dot(n, h)), a2) / (4.0 * cosO);
+  return vec4(2.0 * woH * h - wo, density);
+}
+
+// environment_lighting.cpp's sampleLobe, line for line: xyz one importance sample of the
+// material's lobe at (u1, u2), w its density over solid angle (0: skip it).
+vec4 sampleLobe(vec3 n, vec3 wo, float u1, float u2) {
+  float phi = 2.0 * kPi * u2;
+  if (uLobe == 1) {
+    float cosTheta = pow(u1, 1.0 / (uExponent + 1.0));
+    return vec4(aroundAxis(reflectedDirection(n, wo), cosTheta, phi),
+                (uExponent + 1.0) / (2.0 * kPi) * powNonNegative(cosTheta, uExponent));
+  }
+  if (uLobe == 3) return sampleVisibleGgx(n, wo, u1, u2);
+  float cosH = pow(u1, 1.0 / (uExponent + 2.0));
+  float pdfHalf = (uExponent + 2.0) / (2.0 * kPi) * powNonNegative(cosH, uExponent + 1.0);
+  vec3 h = aroundAxis(n, cosH, phi);
+  float woH = dot(wo, h);
+  if (woH <= 0.0) return vec4(h, 0.0);
+  return vec4(2.0 * woH * h - wo, pdfHalf / (4.0 * woH));
+}
+
+// The base-2 radical inverse of k (the Hammersley set's second coordinate).
+float radicalInverse2(uint k) {
+  k = (k << 16u) | (k >> 16u);
+  k = ((k & 0x55555555u) << 1u) | ((k & 0xAAAAAAAAu) >> 1u);
+  k = ((k & 0x33333333u) << 2u) | ((k & 0xCCCCCCCCu) >> 2u);
+  k = ((k & 0x0F0F0F0Fu) << 4u) | ((k & 0xF0F0F0F0u) >> 4u);
+  k = ((k & 0x00FF00FFu) << 8u) | ((k & 0xFF00FF00u) >> 8u);
+  return float(k) * 2.3283064365386963e-10;
+}
+
+// environment_lighting.cpp's filteredSpecular: filtered importance sampling of uPrefiltered.
+vec3 filteredSpecular(vec3 n, vec3 wo) {
+  float texelSr = 4.0 * kPi / (6.0 * uFilteredFacePx * uFilteredFacePx);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < uFilteredSamples; ++k) {
+    float u1 = (float(k) + 0.5) / float(uFilteredSamples);
+    vec4 s = sampleLobe(n, wo, u1, radicalInverse2(uint(k)));
+    float cosI = dot(n, s.xyz);
+    if (s.w <= 0.0 || cosI <= 0.0) continue;
+    float lod = clamp(0.5 * log2(1.0 / (float(uFilteredSamples) * s.w * texelSr)), 0.0,
+                      uFilteredTopLevel);
+    sum += specularBrdf(n, wo, s.xyz) * textureLod(uPrefiltered, s.xyz, lod).rgb * (cosI / s.w);
+  }
+  return sum / float(uFilteredSamples);
 }
 
 // The shadowed and unshadowed sums of shading by ratio (light_renderer.cpp's RatioSums).
@@ -236,9 +321,14 @@ vec3 ratioShading(vec3 n, vec3 wo, vec3 p) {
     float effective = s.sumY2 > 0.0 ? s.sumY * s.sumY / s.sumY2 : 0.0;
     float t = clamp(effective / uMinEffectiveLights, 0.0, 1.0);
     vec3 ratioS = mix(ratioD, ratioOf(s.shadowedS, s.unshadowedS), t);
-    vec3 d = normalize(mix(n, reflectedDirection(n, wo), uSpecularLookupBlend));
-    radiance += textureLod(uPrefiltered, d, 0.0).rgb * directionalAlbedo(dot(n, wo)) * ratioS +
-                s.peakS;
+    vec3 unshadowedSpecular;
+    if (uFilteredSamples > 0) {
+      unshadowedSpecular = filteredSpecular(n, wo);
+    } else {
+      vec3 d = normalize(mix(n, reflectedDirection(n, wo), uSpecularLookupBlend));
+      unshadowedSpecular = textureLod(uPrefiltered, d, 0.0).rgb * directionalAlbedo(dot(n, wo));
+    }
+    radiance += unshadowedSpecular * ratioS + s.peakS;
   }
   return radiance;
 }
