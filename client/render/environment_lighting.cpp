@@ -11,6 +11,7 @@
 #include "client/render/cube_map_sampling.h"
 #include "client/render/texel_samples.h"
 #include "client/render/shading_model.h"
+#include "client/render/tangent_frame.h"
 #include "core/color.h"
 #include "core/cube_map_lookup.h"
 #include "core/sampling_pattern.h"
@@ -69,18 +70,9 @@ float lobeWidthRad(const scene::Material& m) {
   return kPi;
 }
 
-// An orthonormal frame around unit z: t, b with t x b = z.
-void frameAround(glm::vec3 z, glm::vec3& t, glm::vec3& b) {
-  const glm::vec3 helper = std::abs(z.y) < 0.9F ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  t = glm::normalize(glm::cross(helper, z));
-  b = glm::cross(z, t);
-}
-
 // A direction at polar cosine cosTheta and azimuth phi around z.
 glm::vec3 around(glm::vec3 z, float cosTheta, float phi) {
-  glm::vec3 t;
-  glm::vec3 b;
-  frameAround(z, t, b);
+  const auto [t, b] = tangentFrameAround(z);
   const float sinTheta = std::sqrt(std::max(0.0F, 1.0F - cosTheta * cosTheta));
   return glm::normalize(sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * z);
 }
@@ -101,9 +93,7 @@ LobeSample sampleVisibleGgx(const scene::Material& m, glm::vec3 n, glm::vec3 wo,
                             float u2) {
   const float a = m.roughness * m.roughness;
   const float a2 = a * a;
-  glm::vec3 t;
-  glm::vec3 b;
-  frameAround(n, t, b);
+  const auto [t, b] = tangentFrameAround(n);
   const float cosO = glm::dot(n, wo);
   if (cosO <= 0.0F) return {n, 0.0F};
   // The view in the frame (t, b, n), stretched to the hemisphere configuration.

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "client/render/tangent_frame.h"
 #include "client/render/texel_samples.h"
 #include "core/color.h"
 #include "core/direction_tree.h"
@@ -41,10 +42,7 @@ std::uint32_t zOrderOf(glm::vec3 texelDir, glm::vec3 t, glm::vec3 b) {
 void sortAlongZCurve(std::vector<std::uint32_t>::iterator first,
                      std::vector<std::uint32_t>::iterator last,
                      const std::vector<TexelSample>& texels, glm::vec3 lightDir) {
-  const glm::vec3 z = glm::normalize(lightDir);
-  const glm::vec3 helper = std::abs(z.y) < 0.9F ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-  const glm::vec3 t = glm::normalize(glm::cross(helper, z));
-  const glm::vec3 b = glm::cross(z, t);
+  const auto [t, b] = tangentFrameAround(glm::normalize(lightDir));
   std::vector<std::uint64_t> keyed;  // (z-order << 32) | texel: one sort, ties by texel
   keyed.reserve(std::size_t(last - first));
   for (auto it = first; it != last; ++it) {

@@ -142,11 +142,18 @@ vec3 directionalAlbedo(float cosNormalEye) {
   return uSpecularAlbedo * scale + vec3(bias);
 }
 
+// render/tangent_frame.h's tangentFrameAround: t, b with t x b = z.
+void frameAround(vec3 z, out vec3 t, out vec3 b) {
+  vec3 helper = abs(z.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  t = normalize(cross(helper, z));
+  b = cross(z, t);
+}
+
 // environment_lighting.cpp's around: a direction at polar cosine cosTheta and azimuth phi about z.
 vec3 aroundAxis(vec3 z, float cosTheta, float phi) {
-  vec3 helper = abs(z.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-  vec3 t = normalize(cross(helper, z));
-  vec3 b = cross(z, t);
+  vec3 t;
+  vec3 b;
+  frameAround(z, t, b);
   float sinTheta = sqrt(max(0.0, 1.0 - cosTheta * cosTheta));
   return normalize(sinTheta * cos(phi) * t + sinTheta * sin(phi) * b + cosTheta * z);
 }
@@ -155,9 +162,9 @@ vec3 aroundAxis(vec3 z, float cosTheta, float phi) {
 vec4 sampleVisibleGgx(vec3 n, vec3 wo, float u1, float u2) {
   float a = uRoughness * uRoughness;
   float a2 = a * a;
-  vec3 helper = abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-  vec3 t = normalize(cross(helper, n));
-  vec3 b = cross(n, t);
+  vec3 t;
+  vec3 b;
+  frameAround(n, t, b);
   float cosO = dot(n, wo);
   if (cosO <= 0.0) return vec4(n, 0.0);
   vec3 v = normalize(vec3(a * dot(wo, t), a * dot(wo, b), cosO));
