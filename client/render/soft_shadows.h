@@ -23,7 +23,6 @@
 // from the spread of the stratum's radiance-weighted directions: for mean resultant length R of
 // the unit directions weighted by luminance x sr, 4 pi (1 - R), which is exactly the solid angle
 // of a uniformly bright cone (R = (1 + cos theta) / 2) and 0 for a single texel.
-//
 #pragma once
 
 #include <cstddef>
