@@ -221,7 +221,7 @@ glm::vec3 shade(const Frame& frame, const ShadingPoint& p) {
   return diffuseLightsTerm(frame, p, m.glossy());
 }
 
-void renderRow(const Frame& frame, const scene::OrbitCamera& camera, int row,
+void renderRow(const Frame& frame, const scene::ViewCamera& camera, int row,
                render::LinearImage& image) {
   for (int x = 0; x < image.widthPx; ++x) {
     const scene::Ray ray =
@@ -245,7 +245,7 @@ struct PixelRecord {
   RatioSums sums;
 };
 
-void recordRow(const Frame& frame, const scene::OrbitCamera& camera, int row,
+void recordRow(const Frame& frame, const scene::ViewCamera& camera, int row,
                std::vector<PixelRecord>& records, render::LinearImage& image) {
   for (int x = 0; x < image.widthPx; ++x) {
     const scene::Ray ray =
@@ -303,7 +303,7 @@ RatioSums filteredSums(const Frame& frame, const std::vector<PixelRecord>& recor
 
 }  // namespace
 
-render::LinearImage renderWithLights(const EmbreeScene& scene, const scene::OrbitCamera& camera,
+render::LinearImage renderWithLights(const EmbreeScene& scene, const scene::ViewCamera& camera,
                                      int widthPx, int heightPx, const render::ShadingLights& lights,
                                      const render::LightingGeometry& geometry, const CubeMap* cube,
                                      const LightRenderOptions& options) {

@@ -2,7 +2,7 @@
 // renderer (paper 004 sections 4 and 5.2) with ray-traced visibility for every light instead of
 // shadow maps.
 //
-// Per pixel, the primary ray of scene::OrbitCamera::primaryRay through the pixel's centre; at its
+// Per pixel, the primary ray of scene::ViewCamera::primaryRay through the pixel's centre; at its
 // hit (normal turned toward the eye, shading_point.h), in the units of render/shading_model.h:
 //   L_o = sum over the diffuse lights i (render/shading_lights.h; the region list of n when the
 //         lights carry lists, else all of them) of
@@ -50,7 +50,7 @@
 #include "client/render/environment_lighting.h"
 #include "client/render/linear_image.h"
 #include "client/render/shading_lights.h"
-#include "client/scene/orbit_camera.h"
+#include "client/scene/view_camera.h"
 #include "core/cube_map.h"
 
 namespace vem::embree {
@@ -71,7 +71,7 @@ struct LightRenderOptions {
 
 // widthPx, heightPx >= 1. `cube` may be null (black background, mirrors lit by the lights).
 [[nodiscard]] render::LinearImage renderWithLights(
-    const EmbreeScene& scene, const scene::OrbitCamera& camera, int widthPx, int heightPx,
+    const EmbreeScene& scene, const scene::ViewCamera& camera, int widthPx, int heightPx,
     const render::ShadingLights& lights, const render::LightingGeometry& geometry,
     const CubeMap* cube, const LightRenderOptions& options = {});
 

@@ -94,7 +94,7 @@ void samplePixel(const Context& c, PixelState& s, std::size_t pixel, int firstSa
   }
 }
 
-PixelState primaryState(const Context& c, const scene::OrbitCamera& camera, int x, int y,
+PixelState primaryState(const Context& c, const scene::ViewCamera& camera, int x, int y,
                         int heightPx) {
   PixelState s;
   const scene::Ray ray = camera.primaryRay(float(x) + 0.5F, float(y) + 0.5F, c.widthPx, heightPx);
@@ -152,7 +152,7 @@ render::LinearImage imageOf(const std::vector<PixelState>& pixels, int widthPx, 
 
 }  // namespace
 
-ReferenceResult renderReference(const EmbreeScene& scene, const scene::OrbitCamera& camera,
+ReferenceResult renderReference(const EmbreeScene& scene, const scene::ViewCamera& camera,
                                 int widthPx, int heightPx, const EnvMap& map,
                                 const ReferenceOptions& options) {
   VEM_EXPECTS(map.pixelCount() > 0 && options.samplesPerPass >= 1);

@@ -3,7 +3,7 @@
 // visibility, integrated by Monte Carlo until converged:
 //   L_o = integral over the sphere of f(wi, wo) L_env(wi) max(0, n . wi) V(wi) dwi.
 //
-// - Primary rays as renderWithLights (scene::OrbitCamera::primaryRay through pixel centres), so
+// - Primary rays as renderWithLights (scene::ViewCamera::primaryRay through pixel centres), so
 //   the two images are pixel-aligned; normals turned toward the eye (shading_point.h).
 // - L_env(wi) is the value of the map pixel that contains wi (sanitised, core/sampling_tables.h):
 //   piecewise constant per pixel, the function core/standard_sampler.h's density is proportional
@@ -29,7 +29,7 @@
 
 #include "client/embree/embree_scene.h"
 #include "client/render/linear_image.h"
-#include "client/scene/orbit_camera.h"
+#include "client/scene/view_camera.h"
 #include "core/env_map.h"
 
 namespace vem::embree {
@@ -51,7 +51,7 @@ struct ReferenceResult {
 };
 
 [[nodiscard]] ReferenceResult renderReference(const EmbreeScene& scene,
-                                              const scene::OrbitCamera& camera, int widthPx,
+                                              const scene::ViewCamera& camera, int widthPx,
                                               int heightPx, const EnvMap& map,
                                               const ReferenceOptions& options = {});
 

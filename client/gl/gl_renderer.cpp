@@ -110,8 +110,8 @@ struct GlRenderer::Impl {
   MirrorOcclusion mirrors;             // what the mirror-like meshes' reflections hit
 
   std::size_t shadowPass(const render::ShadingLights& frame, GlFrameStats& stats);
-  void backgroundPass(const scene::OrbitCamera& camera) const;
-  void geometryPass(const scene::OrbitCamera& camera, const render::ShadingLights& frame,
+  void backgroundPass(const scene::ViewCamera& camera) const;
+  void geometryPass(const scene::ViewCamera& camera, const render::ShadingLights& frame,
                     std::size_t shadowMaps, const RatioShading& ratio) const;
   void setMaterial(const scene::Material& material, bool glossyPass) const;
 };
@@ -218,16 +218,16 @@ std::size_t GlRenderer::Impl::shadowPass(const render::ShadingLights& frame, GlF
   return count;
 }
 
-void GlRenderer::Impl::backgroundPass(const scene::OrbitCamera& camera) const {
+void GlRenderer::Impl::backgroundPass(const scene::ViewCamera& camera) const {
   const float aspect = float(options.widthPx) / float(options.heightPx);
-  const glm::mat4 clipFromWorld = camera.clipFromView(aspect) * camera.viewFromWorld();
+  const glm::mat4 clipFromWorld = camera.clipFromView(aspect) * camera.viewFromWorld;
   glDisable(GL_DEPTH_TEST);
   glDepthMask(GL_FALSE);
   background.use();
   environment.bind(kEnvironmentUnit);
   background.set("uEnvironment", int(kEnvironmentUnit));
   background.set("uWorldFromClip", glm::inverse(clipFromWorld));
-  background.set("uEye", camera.eyeWorld());
+  background.set("uEye", camera.eyeWorld);
   background.set("uViewportPx", glm::vec2(float(options.widthPx), float(options.heightPx)));
   background.set("uHemisphere", options.environmentCoverage == MapLayout::Hemisphere ? 1 : 0);
   glBindVertexArray(emptyVertexArray.id());
@@ -248,7 +248,7 @@ void GlRenderer::Impl::setMaterial(const scene::Material& material, bool glossyP
   lighting.set("uMirror", mirror ? 1 : 0);
 }
 
-void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
+void GlRenderer::Impl::geometryPass(const scene::ViewCamera& camera,
                                     const render::ShadingLights& frame, std::size_t shadowMaps,
                                     const RatioShading& ratio) const {
   const float aspect = float(options.widthPx) / float(options.heightPx);
@@ -256,8 +256,8 @@ void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   lighting.use();
-  lighting.set("uClipFromWorld", camera.clipFromView(aspect) * camera.viewFromWorld());
-  lighting.set("uEye", camera.eyeWorld());
+  lighting.set("uClipFromWorld", camera.clipFromView(aspect) * camera.viewFromWorld);
+  lighting.set("uEye", camera.eyeWorld);
   lights.bind(lighting);
   atlas.bind(kShadowUnit);
   lighting.set("uShadowAtlas", int(kShadowUnit));
@@ -297,7 +297,7 @@ void GlRenderer::Impl::geometryPass(const scene::OrbitCamera& camera,
   glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 }
 
-GlFrameStats GlRenderer::render(const scene::OrbitCamera& camera,
+GlFrameStats GlRenderer::render(const scene::ViewCamera& camera,
                                 const render::ShadingLights& lights, const CubeMap* background,
                                 std::uint64_t backgroundVersion, const RatioShading& ratio) {
   Impl& s = *impl_;

@@ -5,7 +5,7 @@
 // the background; a separate tone-mapping pass for display (tone_map_pass.h, section 5.1).
 //
 // Conventions: the scene's world frame (scene/scene.h); images widthPx x heightPx, row 0 at the
-// top and pixel-aligned with the Embree renderer through scene::OrbitCamera; radiance in the
+// top and pixel-aligned with the Embree renderer through scene::ViewCamera; radiance in the
 // lights' units (core/light.h). Needs a current GlContext for its whole life.
 //
 // What a frame computes follows its ShadingLights: no shadowDirs, no shadow pass; the same
@@ -36,7 +36,7 @@
 #include "client/render/linear_image.h"
 #include "client/render/shading_lights.h"
 #include "client/render/tone_mapping.h"
-#include "client/scene/orbit_camera.h"
+#include "client/scene/view_camera.h"
 #include "client/scene/scene.h"
 #include "core/cube_map.h"
 #include "core/env_map.h"
@@ -86,7 +86,7 @@ class GlRenderer {
   // One frame into the float buffer. background: the cube map to show and reflect (nullptr:
   // black), re-uploaded only when (background, backgroundVersion) differs from the last frame's.
   // ratio: shading by ratio when ratio.lighting is set (above).
-  GlFrameStats render(const scene::OrbitCamera& camera, const render::ShadingLights& lights,
+  GlFrameStats render(const scene::ViewCamera& camera, const render::ShadingLights& lights,
                       const CubeMap* background, std::uint64_t backgroundVersion = 0,
                       const RatioShading& ratio = {});
   // The last frame: linear radiance, covered = 1 where geometry was drawn.

@@ -17,19 +17,20 @@ glm::mat4 OrbitCamera::viewFromWorld() const {
   return glm::lookAt(eyeWorld(), targetWorld, glm::vec3(0.0F, 1.0F, 0.0F));
 }
 
-glm::mat4 OrbitCamera::clipFromView(float aspect) const {
-  return glm::perspective(verticalFovRad, aspect, nearPlane, farPlane);
-}
+glm::mat4 OrbitCamera::clipFromView(float aspect) const { return view().clipFromView(aspect); }
 
 Ray OrbitCamera::primaryRay(float xPx, float yPx, int widthPx, int heightPx) const {
-  const float aspect = float(widthPx) / float(heightPx);
-  const float tanHalf = std::tan(0.5F * verticalFovRad);
-  const float ndcX = xPx / float(widthPx) * 2.0F - 1.0F;
-  const float ndcY = 1.0F - yPx / float(heightPx) * 2.0F;
-  const glm::vec3 dirView(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0F);
-  const glm::mat4 worldFromView = glm::inverse(viewFromWorld());
-  const glm::vec3 dirWorld = glm::normalize(glm::vec3(worldFromView * glm::vec4(dirView, 0.0F)));
-  return Ray{eyeWorld(), dirWorld};
+  return view().primaryRay(xPx, yPx, widthPx, heightPx);
+}
+
+ViewCamera OrbitCamera::view() const {
+  ViewCamera camera;
+  camera.eyeWorld = eyeWorld();
+  camera.viewFromWorld = viewFromWorld();
+  camera.tanHalfFovY = std::tan(0.5F * verticalFovRad);
+  camera.nearPlane = nearPlane;
+  camera.farPlane = farPlane;
+  return camera;
 }
 
 OrbitCamera framingCamera(const Bounds& bounds, float azimuthRad, float elevationRad) {

@@ -1,5 +1,6 @@
-// OrbitCamera: vemview's camera, orbiting a target point; both renderers take their rays and
-// projections from it, so the OpenGL and Embree images are pixel-aligned.
+// OrbitCamera: vemview's camera, orbiting a target point. It is a ViewCamera (view_camera.h), the
+// pinhole camera both renderers take their rays and projections from, so the OpenGL and Embree
+// images are pixel-aligned.
 //
 // Conventions:
 // - World frame of core/env_map.h (right-handed, +Y up). The eye sits at
@@ -15,13 +16,9 @@
 #include <glm/vec3.hpp>
 
 #include "client/scene/scene.h"
+#include "client/scene/view_camera.h"
 
 namespace vem::scene {
-
-struct Ray {
-  glm::vec3 originWorld{0.0F};
-  glm::vec3 dirWorld{0.0F, 0.0F, -1.0F};  // unit
-};
 
 struct OrbitCamera {
   glm::vec3 targetWorld{0.0F};
@@ -37,6 +34,10 @@ struct OrbitCamera {
   [[nodiscard]] glm::mat4 clipFromView(float aspect) const;  // OpenGL clip space, depth -1..1
   // The primary ray through image point (xPx, yPx) (pixel units, centres at +0.5) of a W x H image.
   [[nodiscard]] Ray primaryRay(float xPx, float yPx, int widthPx, int heightPx) const;
+  // The same camera as the renderers take it (a symmetric frustum, square pixels). Implicit: an
+  // orbit camera is a view camera, wherever one is asked for.
+  [[nodiscard]] ViewCamera view() const;
+  operator ViewCamera() const { return view(); }  // NOLINT(google-explicit-constructor)
 };
 
 // A camera that frames `bounds` from azimuth/elevation with a small margin; near and far planes

@@ -62,7 +62,7 @@ std::expected<void, std::string> store(const std::filesystem::path& stem,
 
 }  // namespace
 
-void setCoverage(const embree::EmbreeScene& embreeScene, const scene::OrbitCamera& camera,
+void setCoverage(const embree::EmbreeScene& embreeScene, const scene::ViewCamera& camera,
                  render::LinearImage& image) {
   for (int y = 0; y < image.heightPx; ++y) {
     for (int x = 0; x < image.widthPx; ++x) {

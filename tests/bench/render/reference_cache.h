@@ -6,7 +6,7 @@
 // short of the target at a smaller sample cap than the one asked for.
 //
 // EXR holds no coverage, so the coverage of a cached image is recomputed from the primary rays
-// (the same rays as the renderers: scene::OrbitCamera::primaryRay through pixel centres).
+// (the same rays as the renderers: scene::ViewCamera::primaryRay through pixel centres).
 #pragma once
 
 #include <expected>
@@ -35,7 +35,7 @@ struct StudyReference {
     const std::filesystem::path& cacheDir);
 
 // 1 where a primary ray hits the scene.
-void setCoverage(const embree::EmbreeScene& embreeScene, const scene::OrbitCamera& camera,
+void setCoverage(const embree::EmbreeScene& embreeScene, const scene::ViewCamera& camera,
                  render::LinearImage& image);
 
 }  // namespace vem::bench

@@ -67,8 +67,7 @@ class Fnv {
   std::uint64_t hash_ = 0xCBF29CE484222325ULL;
 };
 
-std::uint64_t sceneKey(const scene::Scene& s, const scene::OrbitCamera& camera) {
-  Fnv fnv;
+void addGeometry(Fnv& fnv, const scene::Scene& s) {
   for (const scene::Mesh& mesh : s.meshes) {
     fnv.add(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
     fnv.add(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
@@ -82,12 +81,28 @@ std::uint64_t sceneKey(const scene::Scene& s, const scene::OrbitCamera& camera) 
     fnv.addValue(m.exponent);
     fnv.addValue(m.roughness);
   }
+}
+
+std::uint64_t sceneKey(const scene::Scene& s, const scene::OrbitCamera& camera) {
+  Fnv fnv;
+  addGeometry(fnv, s);
   for (const float v :
        {camera.targetWorld.x, camera.targetWorld.y, camera.targetWorld.z, camera.distance,
         camera.azimuthRad, camera.elevationRad, camera.verticalFovRad}) {
     fnv.addValue(v);
   }
   return fnv.value();
+}
+
+std::uint64_t sceneKey(const scene::Scene& s, const scene::ViewCamera& camera) {
+  Fnv fnv;
+  addGeometry(fnv, s);
+  fnv.addValue(camera.viewFromWorld);
+  for (const float v : {camera.tanHalfFovY, camera.fyOverFx, camera.principalNdc.x,
+                        camera.principalNdc.y, camera.nearPlane, camera.farPlane}) {
+    fnv.addValue(v);
+  }
+  return fnv.value() ^ 0x9E3779B97F4A7C15ULL;
 }
 
 std::string describeScene(const scene::Scene& s) {
@@ -141,8 +156,22 @@ std::expected<StudyScene, std::string> studySceneOf(scene::Scene scene) {
     return std::unexpected(scene.name + ": " + broken);
   }
   StudyScene out;
-  out.camera = scene::viewingCamera(scene);
-  out.key = sceneKey(scene, out.camera);
+  const scene::OrbitCamera camera = scene::viewingCamera(scene);
+  out.camera = camera;
+  out.key = sceneKey(scene, camera);
+  out.description = describeScene(scene);
+  out.scene = std::move(scene);
+  return out;
+}
+
+std::expected<StudyScene, std::string> studySceneSeenBy(scene::Scene scene,
+                                                         const scene::ViewCamera& camera) {
+  if (const std::string broken = scene::firstContractViolation(scene); !broken.empty()) {
+    return std::unexpected(scene.name + ": " + broken);
+  }
+  StudyScene out;
+  out.camera = camera;
+  out.key = sceneKey(scene, camera);
   out.description = describeScene(scene);
   out.scene = std::move(scene);
   return out;
@@ -154,8 +183,9 @@ std::expected<StudyScene, std::string> studyScene() {
     return std::unexpected("the default scene: " + broken);
   }
   StudyScene out;
-  out.camera = scene::viewingCamera(built.scene);
-  out.key = sceneKey(built.scene, out.camera);
+  const scene::OrbitCamera camera = scene::viewingCamera(built.scene);
+  out.camera = camera;
+  out.key = sceneKey(built.scene, camera);
   out.description = describeScene(built.scene);
   for (const std::string& note : built.notes) out.description += fmt::format(" ({})", note);
   out.scene = std::move(built.scene);

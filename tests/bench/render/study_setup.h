@@ -55,13 +55,17 @@ struct StudyMap {
 
 struct StudyScene {
   scene::Scene scene;
-  scene::OrbitCamera camera;
+  scene::ViewCamera camera;  // vemview's starting camera, or a plate camera
   std::string description;  // one line for the report
   std::uint64_t key = 0;    // hash of the geometry, materials and camera (the reference cache key)
 };
 
 // `scene` seen by vemview's starting camera (scene::viewingCamera), with its key and description.
 [[nodiscard]] std::expected<StudyScene, std::string> studySceneOf(scene::Scene scene);
+
+// `scene` seen by a fixed camera (a plate camera), keyed by both.
+[[nodiscard]] std::expected<StudyScene, std::string> studySceneSeenBy(
+    scene::Scene scene, const scene::ViewCamera& camera);
 
 // The glossy default scene (client/scene/default_scene.h) and vemview's starting camera.
 [[nodiscard]] std::expected<StudyScene, std::string> studyScene();
