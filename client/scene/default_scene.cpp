@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "client/scene/obj_loader.h"
+#include "client/scene/mixed_reality_world.h"
 #include "client/scene/primitives.h"
 
 namespace vem::scene {
@@ -116,6 +117,9 @@ std::optional<Scene> builtinScene(std::string_view name) {
   }
   if (name == "sphere") {
     return loneSphereScene();
+  }
+  if (name == "mixed-reality") {
+    return mixedRealityWorld().objects;
   }
   return std::nullopt;
 }

@@ -18,6 +18,8 @@
 //   "default"  the scene above, glossy
 //   "diffuse"  the scene above, every material Lambertian (anyGlossy() false)
 //   "spheres"  one Lambertian sphere (radius 0.5, albedo 0.8) resting on a 4 x 4 plane (albedo 0.5)
+//   "mixed-reality"  the simulated real world's synthetic objects (mixed_reality_world.h): two
+//              spheres standing on y = 0, no ground (vemview --plate's default)
 //   "sphere"   one lone Lambertian sphere (radius 1 at the origin): convex, so it can shadow
 //              nothing (canCastShadows() false)
 #pragma once

@@ -19,6 +19,7 @@
 
 #include "bench/machine_info.h"
 #include "bench/markdown_output.h"
+#include "bench/render/composite_study.h"
 #include "bench/render/material_study.h"
 #include "bench/render/render_report.h"
 #include "bench/render/study_run.h"
@@ -45,6 +46,7 @@ struct BenchOptions {
   bool noGl = false;
   bool listMaps = false;
   bool materials = false;  // the material study (material_study.h) instead of the sweeps
+  bool composite = false;  // the mixed-reality study (composite_study.h) instead of the sweeps
   std::vector<std::string> materialNames;
   std::vector<std::size_t> counts;  // --materials: the light counts N (empty: the study's)
   std::size_t glShadowMaps = 256;   // --materials: OpenGL's shadow maps S = min(N, this)
@@ -98,10 +100,13 @@ int parse(int argc, char** argv, BenchOptions& o) {
   app.add_flag("--materials", o.materials,
                "the material study of issue 20 (a sphere on a plane, one material at a time, "
                "shading by the lights and by ratio) instead of the sweeps; writes --table");
+  app.add_flag("--composite", o.composite,
+               "the mixed-reality study: objects composited into a simulated plate, against the "
+               "truth (composite_study.h)");
   app.add_option("--dump", o.dumpDir, "with --materials: side-by-side PNGs into this folder");
   app.add_option("--material", o.materialNames, "with --materials: only these materials")
       ->delimiter(',');
-  app.add_option("--counts", o.counts, "with --materials: the light counts N, e.g. 16,256")
+  app.add_option("--counts", o.counts, "with --materials or --composite: the light counts N, e.g. 16,256")
       ->delimiter(',');
   app.add_option("--gl-shadow-maps", o.glShadowMaps,
                  "with --materials: OpenGL's shadow maps, min(N, this), shared by group below N")
@@ -255,6 +260,22 @@ int main(int argc, char** argv) {
   BenchOptions options;
   if (const int parsed = parse(argc, argv, options); parsed != 0) return parsed < 0 ? 0 : parsed;
   if (options.listMaps) return listMaps(options);
+  if (options.composite) {
+    CompositeStudyOptions study;
+    if (options.maps != BenchOptions{}.maps) study.maps = options.maps;
+    study.hdriDir = options.hdriDir;
+    study.size = options.size;
+    study.referenceError = options.referenceError;
+    study.cacheDir = options.cacheDir;
+    study.dumpDir = options.dumpDir;
+    study.frames = options.embreeFrames;
+    if (!options.counts.empty()) study.counts = options.counts;
+    auto report = runCompositeStudy(study);
+    if (!report) return fail(report.error());
+    const std::string withCommand =
+        fmt::format("Command: `{}`\n\n{}", commandLine(argc, argv), *report);
+    return emitMarkdown("vem_render_bench", withCommand, options.table) ? 0 : 1;
+  }
   if (options.materials) {
     MaterialStudyOptions study;
     study.maps = options.maps;

@@ -1,0 +1,346 @@
+#include "bench/render/composite_study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "bench/render/reference_cache.h"
+#include "bench/render/study_setup.h"
+#include "client/embree/differential_renderer.h"
+#include "client/render/environment_lighting.h"
+#include "client/render/image_files.h"
+#include "client/render/image_metrics.h"
+#include "client/render/tone_mapping.h"
+#include "client/scene/local_scene.h"
+#include "client/scene/mixed_reality_world.h"
+
+namespace vem::bench {
+namespace {
+
+constexpr double kShadowDarkening = 0.05;  // the shadow region: truth darker than the plate by this
+constexpr std::size_t kDumpCount = 256;
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+float luminanceOf(const render::LinearImage& image, std::size_t i) {
+  return 0.2126F * image.rgb[3 * i] + 0.7152F * image.rgb[3 * i + 1] +
+         0.0722F * image.rgb[3 * i + 2];
+}
+
+// `image` covered only where `mask` is set.
+render::LinearImage restricted(render::LinearImage image, const std::vector<std::uint8_t>& mask) {
+  for (std::size_t i = 0; i < image.pixelCount(); ++i) image.covered[i] = mask[i];
+  return image;
+}
+
+render::LinearImage coveredEverywhere(render::LinearImage image) {
+  std::ranges::fill(image.covered, std::uint8_t{1});
+  return image;
+}
+
+struct Errors {
+  double whole = 0.0;          // relative RMS
+  double wholeMeanAbs = 0.0;   // mean |dY| / mean Y: less ruled by a few bright pixels
+  double shadow = 0.0;
+};
+
+Errors errorsOf(const render::LinearImage& composite, const render::LinearImage& truth,
+                const std::vector<std::uint8_t>& shadowRegion) {
+  const std::vector<std::uint8_t> all(truth.pixelCount(), 1);
+  const render::ImageError whole =
+      render::compareImages(restricted(composite, all), restricted(truth, all));
+  return {whole.relativeRms, whole.meanAbsoluteRelative,
+          render::compareImages(restricted(composite, shadowRegion),
+                                restricted(truth, shadowRegion))
+              .relativeRms};
+}
+
+scene::Scene rotatedAboutY(scene::Scene s, float angleRad) {
+  const glm::mat3 r(glm::rotate(glm::mat4(1.0F), angleRad, glm::vec3(0.0F, 1.0F, 0.0F)));
+  for (scene::Mesh& mesh : s.meshes) {
+    for (glm::vec3& p : mesh.positions) p = r * p;
+    for (glm::vec3& n : mesh.normals) n = r * n;
+  }
+  return s;
+}
+
+// The plate camera turned by `angleRad` about its own horizontal axis (a tilt error).
+scene::ViewCamera tilted(scene::ViewCamera camera, float angleRad) {
+  camera.viewFromWorld =
+      glm::rotate(glm::mat4(1.0F), angleRad, glm::vec3(1.0F, 0.0F, 0.0F)) * camera.viewFromWorld;
+  return camera;
+}
+
+// The same view of geometry turned by `angleRad` about +Y: the lights seem turned the other way.
+scene::ViewCamera followingYaw(scene::ViewCamera camera, float angleRad) {
+  camera.viewFromWorld = camera.viewFromWorld *
+                         glm::rotate(glm::mat4(1.0F), -angleRad, glm::vec3(0.0F, 1.0F, 0.0F));
+  camera.eyeWorld = glm::vec3(glm::rotate(glm::mat4(1.0F), angleRad, glm::vec3(0, 1, 0)) *
+                              glm::vec4(camera.eyeWorld, 1.0F));
+  return camera;
+}
+
+struct Composited {
+  render::LinearImage differential;
+  render::LinearImage pasted;
+  embree::DifferentialTiming timing;
+  double compositeMs = 0.0;
+  double plainMs = 0.0;  // the objects and local scene in one render, no composite
+};
+
+Composited compositeOnce(embree::DifferentialRenderer& renderer, const scene::ViewCamera& camera,
+                         const StudyImageSize& size, const render::ShadingLights& lights,
+                         const render::LightingGeometry& geometry, const StudyMap& map,
+                         const embree::LightRenderOptions& lightOptions,
+                         const render::LinearImage& plate, std::uint64_t key) {
+  Composited out;
+  render::DifferentialLayers layers =
+      renderer.render(camera, size.widthPx, size.heightPx, lights, geometry, &map.cube,
+                      lightOptions, key, &out.timing);
+  const auto start = std::chrono::steady_clock::now();
+  render::AlbedoEstimate albedo;
+  const render::PlateColour colour;
+  albedo.update(plate, layers.withoutObjects, colour);
+  out.differential = render::compositeDifferential(plate, layers, albedo, colour);
+  out.compositeMs = msSince(start);
+  out.pasted = render::compositePasted(plate, layers, colour);
+  return out;
+}
+
+void dumpRow(const std::string& path, std::initializer_list<const render::LinearImage*> images,
+             const render::ToneParams& params) {
+  const render::LinearImage& first = **images.begin();
+  const int w = first.widthPx;
+  const int h = first.heightPx;
+  const int n = int(images.size());
+  std::vector<std::uint8_t> out(std::size_t(3 * w * n * h));
+  int k = 0;
+  for (const render::LinearImage* image : images) {
+    const std::vector<std::uint8_t> one = render::toneMappedSrgb8(*image, params);
+    for (int y = 0; y < h; ++y) {
+      std::copy_n(one.begin() + std::ptrdiff_t(3 * y * w), 3 * w,
+                  out.begin() + std::ptrdiff_t(3 * (y * n * w + k * w)));
+    }
+    ++k;
+  }
+  (void)render::saveSrgbPng(out, n * w, h, path);
+}
+
+// |composite - truth| as grey, scaled so that 10 % of the truth's mean luminance is white.
+render::LinearImage differenceImage(const render::LinearImage& a, const render::LinearImage& b,
+                                    float meanLuminance) {
+  render::LinearImage out = render::LinearImage::black(a.widthPx, a.heightPx);
+  for (std::size_t i = 0; i < a.pixelCount(); ++i) {
+    const float d = std::abs(luminanceOf(a, i) - luminanceOf(b, i)) / (0.1F * meanLuminance);
+    for (int c = 0; c < 3; ++c) out.rgb[3 * i + std::size_t(c)] = std::min(d, 1.0F);
+    out.covered[i] = 1;
+  }
+  return out;
+}
+
+std::string pct(double x) { return fmt::format("{:.1f} %", 100.0 * x); }
+
+}  // namespace
+
+std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  const scene::MixedRealityWorld world = scene::mixedRealityWorld();
+  const scene::ViewCamera camera = scene::plateViewCamera(world);
+  const render::LightingGeometry geometry = render::makeLightingGeometry();
+  auto realScene = studySceneSeenBy(world.realSurfaces, camera);
+  auto truthScene = studySceneSeenBy(world.realWithObjects, camera);
+  if (!realScene) return std::unexpected(realScene.error());
+  if (!truthScene) return std::unexpected(truthScene.error());
+  auto realEmbree = embree::EmbreeScene::build(realScene->scene);
+  auto truthEmbree = embree::EmbreeScene::build(truthScene->scene);
+  if (!realEmbree) return std::unexpected(realEmbree.error());
+  if (!truthEmbree) return std::unexpected(truthEmbree.error());
+
+  scene::Scene local = scene::floorOnly();
+  for (const scene::Mesh& mesh : world.proxies.meshes) local.meshes.push_back(mesh);
+  const scene::LocalComposition composition = scene::composeWithLocal(world.objects, local);
+  auto renderer = embree::DifferentialRenderer::build(composition);
+  if (!renderer) return std::unexpected(renderer.error());
+  const scene::LocalComposition floorOnlyComposition =
+      scene::composeWithLocal(world.objects, scene::floorOnly());
+  auto floorRenderer = embree::DifferentialRenderer::build(floorOnlyComposition);
+  if (!floorRenderer) return std::unexpected(floorRenderer.error());
+  const float yawErrorRad = 2.0F * 3.14159265F / 180.0F;
+  const scene::LocalComposition yawed =
+      scene::composeWithLocal(rotatedAboutY(world.objects, yawErrorRad),
+                              rotatedAboutY(local, yawErrorRad));
+  auto yawRenderer = embree::DifferentialRenderer::build(yawed);
+  if (!yawRenderer) return std::unexpected(yawRenderer.error());
+  auto withScene = studySceneSeenBy(composition.withObjects, camera);
+  if (!withScene) return std::unexpected(withScene.error());
+
+  std::string errorRows;
+  std::string timeRows;
+  std::string registrationRows;
+  std::string referenceRows;
+  std::uint64_t key = 1;
+  for (const std::string& name : options.maps) {
+    auto map = loadStudyMap(std::filesystem::path(options.hdriDir) / (name + ".exr"));
+    if (!map) return std::unexpected(map.error());
+    embree::ReferenceOptions referenceOptions;
+    referenceOptions.targetRelativeError = options.referenceError;
+    referenceOptions.maxSamples = options.referenceMaxSamples;
+    auto plateRef = cachedReference(*realEmbree, *realScene, *map, options.size.widthPx,
+                                    options.size.heightPx, referenceOptions, options.cacheDir);
+    if (!plateRef) return std::unexpected(plateRef.error());
+    auto truthRef = cachedReference(*truthEmbree, *truthScene, *map, options.size.widthPx,
+                                    options.size.heightPx, referenceOptions, options.cacheDir);
+    if (!truthRef) return std::unexpected(truthRef.error());
+    const render::LinearImage plate = coveredEverywhere(plateRef->image);
+    const render::LinearImage truth = coveredEverywhere(truthRef->image);
+    referenceRows += fmt::format("| {} | {} / {} | {} / {} | {:.0f} s / {:.0f} s |\n", name,
+                                 plateRef->samplesPerPixel, truthRef->samplesPerPixel,
+                                 pct(plateRef->relativeError), pct(truthRef->relativeError),
+                                 plateRef->renderSeconds, truthRef->renderSeconds);
+
+    // The shadow region: real surfaces the objects darken, from the two references.
+    const std::vector<render::SurfaceClass> classes =
+        embree::surfaceClasses(renderer->withObjects(), composition.objectMeshes, camera,
+                               options.size.widthPx, options.size.heightPx, 2);
+    std::vector<std::uint8_t> shadowRegion(plate.pixelCount(), 0);
+    std::size_t shadowPixels = 0;
+    for (std::size_t i = 0; i < plate.pixelCount(); ++i) {
+      const bool darker =
+          luminanceOf(truth, i) < float(1.0 - kShadowDarkening) * luminanceOf(plate, i);
+      shadowRegion[i] = classes[i] == render::SurfaceClass::Local && darker ? 1 : 0;
+      shadowPixels += shadowRegion[i];
+    }
+
+    std::map<double, render::EnvironmentLighting> environments;
+    for (const std::size_t n : options.counts) {
+      render::EnvironmentLightingOptions environmentOptions;
+      environmentOptions.peakFactor = render::peakFactorFor(n);
+      auto [at, made] = environments.try_emplace(environmentOptions.peakFactor);
+      if (made) {
+        at->second = render::makeEnvironmentLighting(map->cube, composition.withObjects.materials,
+                                                     environmentOptions);
+      }
+      render::LightingOptions lighting;
+      lighting.lightCount = n;
+      lighting.shadowedCount = 0;
+      render::ShadingLights lights = studyLights(*map, *withScene, geometry, lighting);
+      lights.glossy.reset();
+      embree::LightRenderOptions lightOptions;
+      lightOptions.environment = &at->second;
+      lightOptions.softShadows = true;
+      lightOptions.cubeCoverage = map->map.layout;
+
+      // Timed: a frame whose lights changed (both renders), then frames that reuse "without".
+      ++key;
+      std::vector<double> fullMs;
+      std::vector<double> reuseMs;
+      std::vector<double> plainMs;
+      Composited result;
+      for (int frame = 0; frame < options.frames; ++frame) {
+        ++key;
+        auto start = std::chrono::steady_clock::now();
+        result = compositeOnce(*renderer, camera, options.size, lights, geometry, *map,
+                               lightOptions, plate, key);
+        fullMs.push_back(msSince(start));
+        start = std::chrono::steady_clock::now();
+        (void)compositeOnce(*renderer, camera, options.size, lights, geometry, *map, lightOptions,
+                            plate, key);
+        reuseMs.push_back(msSince(start));
+        start = std::chrono::steady_clock::now();
+        (void)embree::renderWithLights(renderer->withObjects(), camera, options.size.widthPx,
+                                       options.size.heightPx, lights, geometry, &map->cube,
+                                       lightOptions);
+        plainMs.push_back(msSince(start));
+      }
+      const Errors differential = errorsOf(result.differential, truth, shadowRegion);
+      const Errors pasted = errorsOf(result.pasted, truth, shadowRegion);
+      const Composited floorOnlyResult =
+          compositeOnce(*floorRenderer, camera, options.size, lights, geometry, *map,
+                        lightOptions, plate, ++key);
+      const Errors floorOnlyErrors = errorsOf(floorOnlyResult.differential, truth, shadowRegion);
+      errorRows += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", name, n,
+                               pct(differential.whole), pct(differential.shadow),
+                               pct(pasted.whole), pct(pasted.shadow),
+                               fmt::format("{:.1f}x", pasted.shadow / differential.shadow),
+                               pct(floorOnlyErrors.shadow));
+      timeRows += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f} |\n", name, n,
+                              medianOf(plainMs), medianOf(fullMs), medianOf(reuseMs),
+                              result.compositeMs);
+      if (n == kDumpCount) {
+        for (const float degrees : {0.5F, 1.0F}) {
+          const Composited off = compositeOnce(*renderer, tilted(camera, degrees * 3.14159265F /
+                                                                             180.0F),
+                                               options.size, lights, geometry, *map,
+                                               lightOptions, plate, ++key);
+          const Errors e = errorsOf(off.differential, truth, shadowRegion);
+          registrationRows +=
+              fmt::format("| {} | plate camera tilted by {} degree | {} | {} | {} |\n", name,
+                          degrees, pct(e.whole), pct(e.wholeMeanAbs), pct(e.shadow));
+        }
+        const Composited yawOff =
+            compositeOnce(*yawRenderer, followingYaw(camera, yawErrorRad), options.size, lights,
+                          geometry, *map, lightOptions, plate, ++key);
+        const Errors e = errorsOf(yawOff.differential, truth, shadowRegion);
+        registrationRows += fmt::format("| {} | probe yaw off by 2 degrees | {} | {} | {} |\n",
+                                        name, pct(e.whole), pct(e.wholeMeanAbs), pct(e.shadow));
+        registrationRows +=
+            fmt::format("| {} | none (calibrated) | {} | {} | {} |\n", name,
+                        pct(differential.whole), pct(differential.wholeMeanAbs),
+                        pct(differential.shadow));
+        if (!options.dumpDir.empty()) {
+          std::filesystem::create_directories(options.dumpDir);
+          render::ToneSmoother smoother;
+          const render::ToneParams params = smoother.update(render::measureLuminance(truth), 0.0);
+          double meanY = 0.0;
+          for (std::size_t i = 0; i < truth.pixelCount(); ++i) meanY += double(luminanceOf(truth, i));
+          meanY /= double(truth.pixelCount());
+          const render::LinearImage diff =
+              differenceImage(result.differential, truth, float(meanY));
+          const render::LinearImage pastedDiff =
+              differenceImage(result.pasted, truth, float(meanY));
+          dumpRow(fmt::format("{}/composite-{}.png", options.dumpDir, name),
+                  {&plate, &result.differential, &truth, &diff, &pastedDiff}, params);
+        }
+      }
+    }
+    errorRows += fmt::format("| {} | shadow region | {} pixels of {} | | | | |\n", name,
+                             shadowPixels, plate.pixelCount());
+  }
+  std::string out = fmt::format(
+      "Scene: `{}` filmed by its plate camera at {} x {} px; the synthetic objects: {}. Local "
+      "scene: the floor plane and the proxies (box, wall). Lights: the map's first N Havran "
+      "lights, shading by ratio with soft shadows (Embree). References: "
+      "embree::renderReference to {} relative error.\n\n",
+      world.realSurfaces.name, options.size.widthPx, options.size.heightPx, world.objects.name,
+      pct(options.referenceError));
+  out += "### Error against the truth (relative RMS)\n\n";
+  out += "| map | N | differential, whole | differential, shadow region | pasted, whole | "
+         "pasted, shadow region | pasted / differential in the shadows | floor plane only, "
+         "shadow region |\n|---|---|---|---|---|---|---|---|\n" +
+         errorRows;
+  out += "\n### Time per frame (ms, median)\n\n";
+  out += "| map | N | plain render (objects and local scene) | composite, lights changed | "
+         "composite, lights unchanged (\"without\" reused) | of which the composite itself "
+         "|\n|---|---|---|---|---|---|\n" +
+         timeRows;
+  out += "\n### What a registration error costs (N = 256)\n\n| map | error | whole, relative RMS "
+         "| whole, mean absolute | shadow region, relative RMS |\n|---|---|---|---|---|\n" +
+         registrationRows;
+  out += "\n### The references\n\n| map | samples per pixel, plate / truth | relative error | "
+         "render time |\n|---|---|---|---|\n" +
+         referenceRows;
+  out += fmt::format("\nStudy time: {:.0f} s.\n",
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - started)
+                         .count());
+  return out;
+}
+
+}  // namespace vem::bench
