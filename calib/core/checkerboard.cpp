@@ -1,4 +1,5 @@
 #include "calib/core/checkerboard.h"
+#include "calib/core/board_shader.h"
 #include "calib/core/frame_around.h"
 
 #include <algorithm>
@@ -23,50 +24,6 @@ constexpr double kSensorMarginPx = 2.0;
 constexpr double kMaxObliquityRad = 60.0 * kDegree;
 // Neighbouring corners lie at least this far apart in the image: smaller squares defeat detectors.
 constexpr double kMinCornerSpacingPx = 8.0;
-
-// Luminance along camera-frame rays meeting the board: the printed pattern, its margin, the grey
-// background, the board's grey back.
-class BoardShader {
- public:
-  BoardShader(const Checkerboard& board, const BoardPose& pose, double whiteCdM2, double blackCdM2)
-      : board_(board),
-        boardFromCamera_(glm::transpose(pose.cameraFromBoard)),
-        normalCamera_(pose.cameraFromBoard[2]),
-        originCameraMm_(pose.boardOriginCameraMm),
-        whiteCdM2_(whiteCdM2),
-        blackCdM2_(blackCdM2),
-        greyCdM2_(std::sqrt(whiteCdM2 * blackCdM2)),
-        printedSideVisible_(glm::dot(normalCamera_, originCameraMm_) > 0.0) {}
-
-  [[nodiscard]] double luminance(const glm::dvec3& rayCamera) const {
-    if (!printedSideVisible_) return greyCdM2_;
-    const double distance =
-        glm::dot(normalCamera_, originCameraMm_) / glm::dot(normalCamera_, rayCamera);
-    if (!(distance > 0.0) || !std::isfinite(distance)) return greyCdM2_;
-    const glm::dvec3 boardMm = boardFromCamera_ * (distance * rayCamera - originCameraMm_);
-    return pattern(boardMm.x / board_.squareMm, boardMm.y / board_.squareMm);
-  }
-
- private:
-  // (x, y) in squares from the first inner corner.
-  [[nodiscard]] double pattern(double x, double y) const {
-    const double cols = board_.innerCols;
-    const double rows = board_.innerRows;
-    if (x < -2.0 || x > cols + 1.0 || y < -2.0 || y > rows + 1.0) return greyCdM2_;
-    if (x < -1.0 || x >= cols || y < -1.0 || y >= rows) return whiteCdM2_;
-    const long parity = (long(std::floor(x)) + long(std::floor(y))) % 2;
-    return parity == 0 ? blackCdM2_ : whiteCdM2_;
-  }
-
-  Checkerboard board_;
-  glm::dmat3 boardFromCamera_;
-  glm::dvec3 normalCamera_;  // board +Z
-  glm::dvec3 originCameraMm_;
-  double whiteCdM2_;
-  double blackCdM2_;
-  double greyCdM2_;
-  bool printedSideVisible_;
-};
 
 // The sensor's pixel box (inclusive) that can see the board and its margin: the bounding box of its
 // projected outline, grown by two pixels; the whole sensor when part of the board lies beyond the

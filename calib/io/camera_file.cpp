@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "calib/io/calibration_fields.h"
 #include "calib/io/camera_file_fields.h"
 #include "calib/io/file_access.h"
 #include "util/toml_reader.h"
@@ -28,7 +29,10 @@ std::array<double, 3> channelArray(const std::vector<double>& values) {
 void readHeader(FieldReader& root) {
   const std::string format = root.string("format");
   root.require(format == detail::kCameraFormatName, "format",
-               "expected \"vemcast-camera\", found \"" + format + "\" (not a vemcast camera file)");
+               "expected \"vemcast-camera\", found \"" + format + "\"" +
+                   (format == detail::kPlateCameraFormatName
+                        ? " (a plate camera file, not a light-probe camera file)"
+                        : " (not a vemcast camera file)"));
   const std::int64_t version = root.integer("version", std::numeric_limits<std::int64_t>::min(),
                                             std::numeric_limits<std::int64_t>::max());
   if (root.ok() && version != kCameraFileVersion)
@@ -36,28 +40,6 @@ void readHeader(FieldReader& root) {
               "unknown version " + std::to_string(version) +
                   " (this build of vemcast reads version " + std::to_string(kCameraFileVersion) +
                   ")");
-}
-
-PixelFormat readPixelFormat(FieldReader& r) {
-  const std::string name = r.string("pixel_format");
-  const std::optional<PixelFormat> format = parsePixelFormat(name);
-  r.require(!r.ok() || format.has_value(), "pixel_format",
-            "expected Mono8, Mono10, Mono12, Mono16, RGB8, RGB10, RGB12 or RGB16, found \"" + name +
-                "\"");
-  return format.value_or(PixelFormat{});
-}
-
-CameraIdentity readCamera(FieldReader r) {
-  r.onlyKeys({"model", "serial", "sensor_width", "sensor_height", "pixel_format"});
-  CameraIdentity camera;
-  camera.model = r.string("model");
-  camera.serial = r.string("serial");
-  camera.sensorWidthPx =
-      int(r.integerQuantity("sensor_width", detail::kUnitPx, 1, detail::kMaxSensorSidePx));
-  camera.sensorHeightPx =
-      int(r.integerQuantity("sensor_height", detail::kUnitPx, 1, detail::kMaxSensorSidePx));
-  camera.pixelFormat = readPixelFormat(r);
-  return camera;
 }
 
 PhotometricQuality readPhotometricFit(FieldReader r) {
@@ -159,34 +141,6 @@ PhotometricCalibration readPhotometric(FieldReader r, PixelFormat format,
   return photometric;
 }
 
-GeometricQuality readGeometricFit(FieldReader r) {
-  r.onlyKeys({"rms_reprojection", "views", "corners", "date"});
-  GeometricQuality quality;
-  quality.rmsReprojectionPx = r.quantity("rms_reprojection", detail::kUnitPx);
-  r.require(quality.rmsReprojectionPx >= 0.0, "rms_reprojection",
-            "expected 0 or more, found " + shortestText(quality.rmsReprojectionPx));
-  quality.views = int(r.integer("views", 0, 1'000'000));
-  quality.corners = int(r.integer("corners", 0, 1'000'000'000));
-  quality.date = r.dateText("date");
-  return quality;
-}
-
-bool onSensor(const glm::dvec2& point, const CameraIdentity& camera) {
-  return point.x >= -0.5 && point.x <= camera.sensorWidthPx - 0.5 && point.y >= -0.5 &&
-         point.y <= camera.sensorHeightPx - 0.5;
-}
-
-glm::dvec2 readPrincipalPoint(FieldReader& r, const CameraIdentity& camera) {
-  const std::vector<double> centre =
-      r.quantityArray("principal_point", detail::kUnitPx, {2, "x and y"});
-  const glm::dvec2 point{centre[0], centre[1]};
-  r.require(onSensor(point, camera), "principal_point",
-            "expected a point on the " + std::to_string(camera.sensorWidthPx) + " x " +
-                std::to_string(camera.sensorHeightPx) + " sensor, found (" +
-                shortestText(centre[0]) + ", " + shortestText(centre[1]) + ")");
-  return point;
-}
-
 KannalaBrandtLens readLens(FieldReader r, const CameraIdentity& camera, GeometricQuality& quality) {
   r.onlyKeys({"model", "k", "principal_point", "aspect", "max_theta", "fit"});
   const std::string model = r.string("model");
@@ -195,7 +149,7 @@ KannalaBrandtLens readLens(FieldReader r, const CameraIdentity& camera, Geometri
   KannalaBrandtLens lens;
   const std::vector<double> k = r.quantityArray("k", detail::kUnitPx, {5, "k1 to k5"});
   std::copy(k.begin(), k.end(), lens.kPx.begin());
-  lens.principalPointPx = readPrincipalPoint(r, camera);
+  lens.principalPointPx = detail::readPrincipalPoint(r, camera);
   lens.aspect = r.number("aspect");
   r.require(lens.aspect > 0.0, "aspect",
             "expected a ratio above 0, found " + shortestText(lens.aspect));
@@ -205,7 +159,7 @@ KannalaBrandtLens readLens(FieldReader r, const CameraIdentity& camera, Geometri
                 shortestText(lens.maxThetaRad * 180.0 / std::numbers::pi) + " deg");
   if (const std::optional<const char*> defect = lensDefect(lens); defect && r.ok())
     r.fail("k", util::TomlProblem::BadValue, *defect);
-  quality = readGeometricFit(r.section("fit"));
+  quality = detail::readGeometricQuality(r.section("fit"));
   return lens;
 }
 
@@ -221,7 +175,7 @@ CameraOrientation readOrientation(FieldReader r) {
 CameraCalibration readCalibration(FieldReader& root) {
   CameraCalibration calibration;
   root.onlyKeys({"format", "version", "camera", "photometric", "geometric", "orientation"});
-  calibration.camera = readCamera(root.section("camera"));
+  calibration.camera = detail::readCameraIdentity(root.section("camera"));
   if (std::optional<FieldReader> photometric = root.optionalSection("photometric"))
     calibration.photometric = readPhotometric(*photometric, calibration.camera.pixelFormat,
                                               calibration.photometricQuality);

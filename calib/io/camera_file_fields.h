@@ -1,5 +1,6 @@
 // The names and units of the camera file's fields (internal to vem_calibio), shared by its reader
-// (camera_file.cpp) and writer (camera_file_format.cpp). docs/calibration.md lists them.
+// (camera_file.cpp) and writer (camera_file_format.cpp), and by the plate-camera file's
+// (plate_camera_file.cpp). docs/calibration.md lists them.
 #pragma once
 
 #include <string_view>
@@ -7,6 +8,8 @@
 namespace vem::calib::io::detail {
 
 inline constexpr std::string_view kCameraFormatName = "vemcast-camera";
+// The plate camera's file (plate_camera_file.h): named when one file is given for the other.
+inline constexpr std::string_view kPlateCameraFormatName = "vemcast-plate-camera";
 
 inline constexpr std::string_view kUnitPx = "px";
 inline constexpr std::string_view kUnitCode = "code";

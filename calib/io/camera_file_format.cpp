@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "calib/io/camera_file.h"
+#include "calib/io/calibration_fields.h"
 #include "calib/io/camera_file_fields.h"
 #include "calib/io/toml_writer.h"
 
@@ -16,37 +17,12 @@ namespace {
 
 using detail::TomlWriter;
 
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;  // as the reader converts
-
 std::span<const double> channels(const std::array<double, 3>& values, PixelFormat format) {
   return std::span<const double>(values).first(std::size_t(format.channels));
 }
 
 std::string channelNote(PixelFormat format, std::string_view what) {
   return std::string(format.channels == 3 ? "R, G, B: " : "") + std::string(what);
-}
-
-// Degrees that read back (deg * pi / 180) as exactly `rad`, the shortest such text; none if no
-// value near rad * 180 / pi does.
-std::optional<double> exactDegrees(double rad) {
-  std::optional<double> best;
-  double candidate = rad * (180.0 / std::numbers::pi);
-  for (int step = 0; step < 8; ++step) candidate = std::nextafter(candidate, -INFINITY);
-  for (int step = 0; step < 16; ++step, candidate = std::nextafter(candidate, INFINITY)) {
-    if (candidate * kRadPerDeg != rad) continue;
-    if (!best || detail::tomlNumber(candidate).size() < detail::tomlNumber(*best).size())
-      best = candidate;
-  }
-  return best;
-}
-
-void writeCamera(TomlWriter& w, const CameraIdentity& camera) {
-  w.table("camera");
-  w.string("model", camera.model);
-  w.string("serial", camera.serial);
-  w.integerQuantity("sensor_width", camera.sensorWidthPx, detail::kUnitPx);
-  w.integerQuantity("sensor_height", camera.sensorHeightPx, detail::kUnitPx);
-  w.string("pixel_format", pixelFormatName(camera.pixelFormat), "channels and bits per code");
 }
 
 void writeResponse(TomlWriter& w, const ResponseModel& response, PixelFormat format) {
@@ -100,16 +76,8 @@ void writeLens(TomlWriter& w, const KannalaBrandtLens& lens, const GeometricQual
   const std::array<double, 2> centre{lens.principalPointPx.x, lens.principalPointPx.y};
   w.quantity("principal_point", centre, detail::kUnitPx, "x (column), y (row)");
   w.number("aspect", lens.aspect, "row scale / column scale");
-  if (const std::optional<double> deg = exactDegrees(lens.maxThetaRad)) {
-    w.quantity("max_theta", *deg, detail::kUnitDeg, "half the field of view");
-  } else {
-    w.quantity("max_theta", lens.maxThetaRad, "rad", "half the field of view");
-  }
-  w.table("geometric.fit");
-  w.quantity("rms_reprojection", quality.rmsReprojectionPx, detail::kUnitPx);
-  w.integer("views", quality.views);
-  w.integer("corners", quality.corners);
-  w.string("date", quality.date, "UTC");
+  detail::writeAngle(w, "max_theta", lens.maxThetaRad, "half the field of view");
+  detail::writeGeometricQuality(w, "geometric.fit", quality);
 }
 
 void writeOrientation(TomlWriter& w, const CameraOrientation& orientation) {
@@ -128,7 +96,7 @@ std::string formatCameraFile(const CameraCalibration& calibration) {
   w.comment("Every quantity is { value = ..., unit = \"...\" }; L is luminance in cd/m2.");
   w.string("format", detail::kCameraFormatName);
   w.integer("version", kCameraFileVersion);
-  writeCamera(w, calibration.camera);
+  detail::writeCameraIdentity(w, calibration.camera);
   if (calibration.photometric)
     writePhotometric(w, *calibration.photometric, calibration.photometricQuality,
                      calibration.camera.pixelFormat);

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "calib/io/file_access.h"
+#include "calib/io/patch_label.h"
 #include "calib/io/toml_writer.h"
 #include "util/toml_reader.h"
 
@@ -14,13 +15,6 @@ using FieldReader = util::TomlReader;
 constexpr std::string_view kUnitPx = "px";
 constexpr std::string_view kUnitLuminance = "cd/m2";
 constexpr std::int64_t kMaxCoordinatePx = 1 << 16;
-
-// "patch 3" until its name is known, then "patch \"p3\"".
-std::string patchLabel(std::size_t index, const toml::table& table) {
-  const toml::node* name = table.get("name");
-  if (name != nullptr && name->is_string()) return "patch \"" + name->as_string()->get() + "\"";
-  return "patch " + std::to_string(index + 1);
-}
 
 // The region's x, y, width and height, whole pixels.
 void readRegion(FieldReader& r, PatchSpec& patch) {
@@ -67,7 +61,7 @@ std::expected<std::vector<PatchSpec>, CalibFileFailure> parsePatchFile(const std
   std::set<std::string> names;
   for (std::size_t i = 0; tables != nullptr && i < tables->size() && status.ok(); ++i) {
     const toml::table& table = *tables->get(i)->as_table();
-    FieldReader patch(table, patchLabel(i, table) + ": ", status);
+    FieldReader patch(table, detail::patchLabel(i, table) + ": ", status);
     patches.push_back(readPatch(patch));
     patch.require(!status.ok() || names.insert(patches.back().name).second, "name",
                   "the name is used by an earlier patch too (expected unique names)");

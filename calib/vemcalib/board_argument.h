@@ -13,6 +13,12 @@
 
 namespace vem::calibtool {
 
+// A simulated board's white reads 70 % of the way from the black level to saturation (on every
+// channel); its black is kBoardPrintContrast times darker, as matte black and white print
+// (`simulate boards`, `simulate plate`).
+inline constexpr double kBoardWhiteCodeFraction = 0.7;
+inline constexpr double kBoardPrintContrast = 16.0;
+
 // "9x6" (or "9X6") -> 9 inner columns, 6 inner rows; nullopt unless both are whole numbers >= 2.
 [[nodiscard]] std::optional<std::pair<int, int>> parseBoardSize(std::string_view text);
 

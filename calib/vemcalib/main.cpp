@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
       "  vemcalib simulate frame --camera config/camera-example.toml --map sky.exr --out raw.png\n"
       "  vemcalib apply --camera sim/camera.toml --frame raw.png --out polar.exr\n"
       "  vemtool lights --in polar.exr --count 64\n"
+      "The scene (plate) camera of mixed reality: vemcalib plate --help.\n"
       "docs/calibration.md explains each step and the camera file.");
   int exitCode = vem::cli::kExitSuccess;
   vem::calibtool::addPhotometricCommand(app, exitCode);
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
   vem::calibtool::addSimulateCommand(app, exitCode);
   vem::calibtool::addApplyCommand(app, exitCode);
   vem::calibtool::addShowCommand(app, exitCode);
+  vem::calibtool::addPlateCommand(app, exitCode);
   vem::cli::applyConventions(app, "vemcalib");
   try {
     app.parse(argc, argv);

@@ -28,10 +28,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The board's white reads 70 % of the way from the black level to saturation (on every channel);
-// its black is kPrintContrast times darker, as matte black and white print.
-constexpr double kWhiteCodeFraction = 0.7;
-constexpr double kPrintContrast = 16.0;
 
 struct SimulateBoardsOptions {
   std::string camera;
@@ -53,10 +49,10 @@ std::expected<calib::CameraCalibration, std::string> loadTruth(const std::string
   return std::move(*truth);
 }
 
-// The white the board reflects, in cd/m2: kWhiteCodeFraction up the code range on every channel.
+// The white the board reflects, in cd/m2: kBoardWhiteCodeFraction up the code range on every channel.
 double whiteLuminance(const calib::CameraCalibration& truth, const calib::SimulationOptions& sim) {
   const calib::PhotometricCalibration& p = *truth.photometric;
-  const double code = p.blackLevelCode + kWhiteCodeFraction * (p.saturationCode - p.blackLevelCode);
+  const double code = p.blackLevelCode + kBoardWhiteCodeFraction * (p.saturationCode - p.blackLevelCode);
   double white = INFINITY;
   for (int c = 0; c < truth.camera.pixelFormat.channels; ++c)
     white = std::min(white, calib::luminanceFromCode(p, c, code, sim.exposureUs, sim.gain));
@@ -77,7 +73,7 @@ std::expected<std::vector<std::string>, std::string> writeViews(
   for (std::size_t i = 0; i < poses.size(); ++i) {
     simulation.noise.seed = o.seed + i;
     const RawFrame frame =
-        calib::simulateBoardView(board, poses[i], truth, simulation, white, white / kPrintContrast);
+        calib::simulateBoardView(board, poses[i], truth, simulation, white, white / kBoardPrintContrast);
     files.push_back((fs::path(o.out) / fmt::format("board-{:02}.png", i)).string());
     if (auto saved = calib::io::saveRawFrame(frame, files.back()); !saved)
       return std::unexpected(saved.error().message);

@@ -275,6 +275,7 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
   addSimulateFrameCommand(*simulate, exitCode);
   addSimulateBoardsCommand(*simulate, exitCode);
   addSimulateBracketsCommand(*simulate, exitCode);
+  addSimulatePlateCommand(*simulate, exitCode);
 }
 
 }  // namespace vem::calibtool

@@ -15,10 +15,13 @@
 #include <variant>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "calib/io/camera_file.h"
 #include "calib/io/patch_file.h"
+#include "calib/io/plate_camera_file.h"
+#include "calib/io/plate_colour_file.h"
 #include "calib/io/raw_frame_file.h"
 #include "core/env_map.h"
 #include "mapio/map_file.h"
@@ -364,7 +367,8 @@ TEST_F(VemcalibCli, ApplyRefusesACameraWithoutLensAndAFrameOfAnotherSize) {
 TEST_F(VemcalibCli, HelpOfTheToolAndOfEveryCommandShowsAnExample) {
   for (const char* command :
        {"", "photometric", "fisheye", "response", "simulate", "apply", "show", "simulate patches",
-        "simulate frame", "simulate boards", "simulate brackets"}) {
+        "simulate frame", "simulate boards", "simulate brackets", "simulate plate", "plate",
+        "plate intrinsics", "plate pose", "plate probe-yaw", "plate colour"}) {
     const CommandRun r = run(std::string(command) + " --help");
     EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
     EXPECT_TRUE(contains(r.out, "Example")) << "vemcalib " << command << " --help:\n" << r.out;
@@ -395,7 +399,8 @@ TEST_F(VemcalibCli, MissingInputFileIsAFailureAtRunTimeExitOneNotTwo) {
 TEST_F(VemcalibCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
   for (const char* command :
        {"", "photometric", "fisheye", "response", "simulate", "apply", "show", "simulate patches",
-        "simulate frame", "simulate boards", "simulate brackets"}) {
+        "simulate frame", "simulate boards", "simulate brackets", "simulate plate", "plate",
+        "plate intrinsics", "plate pose", "plate probe-yaw", "plate colour"}) {
     const CommandRun r = run(std::string(command) + " --help");
     EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
     const std::string page = r.out.substr(0, r.out.find_last_not_of('\n') + 1);
@@ -412,7 +417,8 @@ TEST_F(VemcalibCli, NoHelpPageShowsTheParsersInternals) {
   const std::regex typeAndValidator{R"(\b(TEXT|INT|UINT|FLOAT|BOOLEAN):)"};
   for (const char* command :
        {"", "photometric", "fisheye", "response", "simulate", "apply", "show", "simulate patches",
-        "simulate frame", "simulate boards", "simulate brackets"}) {
+        "simulate frame", "simulate boards", "simulate brackets", "simulate plate", "plate",
+        "plate intrinsics", "plate pose", "plate probe-yaw", "plate colour"}) {
     const CommandRun r = run(std::string(command) + " --help");
     ASSERT_EQ(r.exitCode, 0) << command << ": " << r.err;
     for (const char* internal : {"->", "ENUM", "{false}", " OR {", " in [", "POSITIVE"})
@@ -494,6 +500,134 @@ TEST_F(VemcalibCompare, AMissingOrBrokenTruthFileIsOneSentenceNamingItAndExit1) 
     EXPECT_TRUE(contains(r.err, truth)) << r.err;
     EXPECT_EQ(r.out, "");
   }
+}
+
+// Issue 21: the plate camera's calibration as a user meets it: the simulated walk-through of
+// docs/calibration.md ("Plate camera") gives the truth back, each step merges its own section, and
+// a refused step leaves the plate-camera file byte for byte as it was.
+class VemcalibPlate : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("vemcalib_cli_plate_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    simulate_ = runIn(dir_, "simulate plate --camera " + kExamplePlate.string() +
+                                " --board 9x6 --square 60 --floor-square 100 --views 10 --out " +
+                                (dir_ / "sim").string());
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  void SetUp() override { ASSERT_EQ(simulate_.exitCode, 0) << simulate_.err; }
+
+  [[nodiscard]] static CommandRun run(const std::string& args) { return runIn(dir_, args); }
+  // A file in the simulation's folder, as an absolute path (commands run in the test's folder).
+  [[nodiscard]] static std::string sim(const std::string& name) {
+    return (dir_ / "sim" / name).string();
+  }
+  // The command simulate plate printed after "next: vemcalib " whose arguments start with `start`.
+  [[nodiscard]] static std::string next(const std::string& start) {
+    std::istringstream lines(simulate_.out);
+    for (std::string line; std::getline(lines, line);)
+      if (line.starts_with("next: vemcalib " + start)) return line.substr(15);
+    ADD_FAILURE() << "no next: vemcalib " << start << " in\n" << simulate_.out;
+    return "";
+  }
+  // The whole calibration into sim/NAME, every step succeeding.
+  static void calibrate(const std::string& name) {
+    for (const char* step : {"plate intrinsics", "plate pose", "plate probe-yaw", "plate colour"}) {
+      std::string args = next(step);
+      args.replace(args.find(sim("plate.toml")), sim("plate.toml").size(), sim(name));
+      const CommandRun r = run(args);
+      ASSERT_EQ(r.exitCode, 0) << args << ": " << r.err;
+      EXPECT_TRUE(contains(r.out, "wrote " + sim(name))) << r.out;
+    }
+  }
+
+  static inline const fs::path kExamplePlate =
+      fs::path(VEM_SOURCE_DIR) / "config/plate-camera-example.toml";
+  static inline fs::path dir_;
+  static inline CommandRun simulate_;
+};
+
+TEST_F(VemcalibPlate, TheSimulatedWalkThroughGivesTheTruthBack) {
+  calibrate("plate.toml");
+  const auto fitted = io::loadPlateCameraFile(sim("plate.toml"));
+  ASSERT_TRUE(fitted.has_value()) << fitted.error().message;
+  const auto truth = io::loadPlateCameraFile(kExamplePlate);
+  ASSERT_TRUE(truth.has_value());
+  EXPECT_LT(fitted->intrinsicsQuality.rmsReprojectionPx, 0.5);
+  EXPECT_NEAR(fitted->intrinsics.fxPx, truth->intrinsics.fxPx, 0.005 * truth->intrinsics.fxPx);
+  EXPECT_NEAR(fitted->intrinsics.cxPx, truth->intrinsics.cxPx, 3.0);
+  ASSERT_TRUE(fitted->pose.has_value());
+  EXPECT_LT(glm::length(fitted->pose->positionWorldM - truth->pose->positionWorldM), 0.01);
+  EXPECT_NEAR(fitted->probeYawRad, truth->probeYawRad, 0.3 * std::numbers::pi / 180.0);
+  ASSERT_TRUE(fitted->colour.has_value());
+  for (std::size_t c = 0; c < 3; ++c)
+    EXPECT_NEAR(fitted->colour->gainRgb[c], truth->colour->gainRgb[c],
+                0.005 * truth->colour->gainRgb[c]);
+  const CommandRun shown = run("show " + sim("plate.toml") + " --compare " + kExamplePlate.string());
+  EXPECT_EQ(shown.exitCode, 0) << shown.err;
+  EXPECT_TRUE(contains(shown.out, "world points, rms")) << shown.out;
+}
+
+TEST_F(VemcalibPlate, ARefusedStepLeavesThePlateFileByteForByte) {
+  calibrate("kept.toml");
+  const std::string before = readTextFile(sim("kept.toml"));
+  std::string intrinsics = next("plate intrinsics");
+  intrinsics.replace(intrinsics.find(sim("plate.toml")), sim("plate.toml").size(), sim("kept.toml"));
+  // An RMS limit no fit meets.
+  CommandRun r = run(intrinsics + " --max-rms 0.001");
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "above the limit of 0.001 px")) << r.err;
+  EXPECT_TRUE(contains(r.err, "(nothing was written)")) << r.err;
+  EXPECT_EQ(lineCount(r.err.substr(r.err.find("vemcalib: error:"))), 1) << r.err;
+  // A floor board's RMS limit no pose meets.
+  r = run("plate pose --image " + sim("plate-floor.png") +
+          " --board 9x6 --square 100 --max-rms 0.001 --out " + sim("kept.toml"));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "plate-floor.png: the floor board's RMS reprojection error is"))
+      << r.err;
+  // A saturated colour patch.
+  auto patches = io::loadColourPatchFile(sim("plate-colour.toml"));
+  ASSERT_TRUE(patches.has_value());
+  patches->back().plateLinear[1] = 1.0;
+  ASSERT_TRUE(io::saveColourPatchFile(*patches, sim("saturated.toml")).has_value());
+  r = run("plate colour --patches " + sim("saturated.toml") + " --out " + sim("kept.toml"));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "patch 'g6' is saturated in G")) << r.err;
+  // A marker whose elevations disagree: another marker.
+  r = run("plate probe-yaw --pixel 1024,86.4 --probe-direction 10,40 --out " + sim("kept.toml"));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "--max-elevation-difference")) << r.err;
+  EXPECT_EQ(lineCount(r.err), 1) << r.err;
+  EXPECT_EQ(readTextFile(sim("kept.toml")), before);
+}
+
+TEST_F(VemcalibPlate, StepsThatNeedAnEarlierOneSayWhichToRunFirst) {
+  const CommandRun r = run("plate pose --image " + sim("plate-floor.png") +
+                           " --board 9x6 --square 100 --out " + sim("none.toml"));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(contains(r.err, "none.toml: no such file (the pose needs the plate camera's "
+                              "intrinsics: run vemcalib plate intrinsics first)"))
+      << r.err;
+  EXPECT_FALSE(fs::exists(sim("none.toml")));
+}
+
+TEST_F(VemcalibPlate, ALightProbeCameraFileGivenAsThePlateFileIsNamedAsSuch) {
+  const fs::path copy = dir_ / "probe-camera.toml";
+  fs::copy_file(kExampleCamera, copy, fs::copy_options::overwrite_existing);
+  const std::string before = readTextFile(copy);
+  const CommandRun r =
+      run("plate colour --patches " + sim("plate-colour.toml") + " --out " + copy.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_TRUE(contains(r.err, "(a light-probe camera file, not a plate camera file)")) << r.err;
+  EXPECT_EQ(readTextFile(copy), before);
+}
+
+TEST_F(VemcalibPlate, ShowPrintsAPlateCameraFile) {
+  const CommandRun r = run("show " + kExamplePlate.string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "vemcast plate camera file")) << r.out;
+  EXPECT_TRUE(contains(r.out, "probe yaw:    35 deg")) << r.out;
 }
 
 }  // namespace
