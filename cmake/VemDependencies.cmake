@@ -4,7 +4,7 @@ find_package(glm REQUIRED)                       # libglm-dev: vector maths
 pkg_check_modules(NANOFLANN REQUIRED IMPORTED_TARGET nanoflann)   # libnanoflann-dev: kd-tree
 find_package(OpenEXR REQUIRED)                   # libopenexr-dev: .exr maps
 find_package(Imath REQUIRED)                     # libimath-dev (with OpenEXR): half floats on the wire
-find_package(OpenCV REQUIRED COMPONENTS core imgcodecs imgproc calib3d photo)  # libopencv-dev:
+find_package(OpenCV REQUIRED COMPONENTS core imgcodecs imgproc calib3d photo videoio)  # libopencv-dev:
                                                  # map and frame files, calibration maths
 find_package(CLI11 REQUIRED)                     # libcli11-dev: argument parsing
 find_package(tomlplusplus REQUIRED)              # libtomlplusplus-dev: calibration and config files

@@ -104,6 +104,19 @@ float srgbEncode(float linear01) {
   return c <= 0.0031308F ? 12.92F * c : 1.055F * std::pow(c, 1.0F / 2.4F) - 0.055F;
 }
 
+float srgbDecode(float encoded01) {
+  const float c = std::clamp(encoded01, 0.0F, 1.0F);
+  return c <= 0.04045F ? c / 12.92F : std::pow((c + 0.055F) / 1.055F, 2.4F);
+}
+
+std::vector<std::uint8_t> displaySrgb8(const LinearImage& image) {
+  std::vector<std::uint8_t> out(image.pixelCount() * 3);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i] = std::uint8_t(std::lround(255.0F * srgbEncode(image.rgb[i])));
+  }
+  return out;
+}
+
 std::vector<std::uint8_t> toneMappedSrgb8(const LinearImage& image, const ToneParams& params) {
   std::vector<std::uint8_t> out(image.pixelCount() * 3);
   for (std::size_t p = 0; p < image.pixelCount(); ++p) {

@@ -62,8 +62,14 @@ class ToneSmoother {
 // Linear radiance -> display value in [0, 1] (before sRGB encoding).
 [[nodiscard]] glm::vec3 toneMap(glm::vec3 rgb, const ToneParams& params);
 [[nodiscard]] float srgbEncode(float linear01);
+// The inverse: an sRGB-encoded value in [0, 1] to linear (IEC 61966-2-1).
+[[nodiscard]] float srgbDecode(float encoded01);
 // The whole image, tone-mapped and sRGB-encoded, 8 bits, row 0 at the top, RGB order.
 [[nodiscard]] std::vector<std::uint8_t> toneMappedSrgb8(const LinearImage& image,
                                                         const ToneParams& params);
+
+// A display-referred image (linear, 1 = the display's white: a camera's 8-bit picture decoded),
+// sRGB-encoded with no tone mapping, clipped at 1: what came in as 8-bit comes out unchanged.
+[[nodiscard]] std::vector<std::uint8_t> displaySrgb8(const LinearImage& image);
 
 }  // namespace vem::render

@@ -34,7 +34,7 @@ class EmbreeFrameRenderer final : public FrameRenderer {
                : "Embree (the same lights, ray-traced shadows, CPU)";
   }
 
-  RenderedFrame render(const scene::OrbitCamera& camera, const render::ShadingLights& lights,
+  RenderedFrame render(const scene::ViewCamera& camera, const render::ShadingLights& lights,
                        const InputFrame& input) override {
     const auto start = std::chrono::steady_clock::now();
     RenderedFrame frame;

@@ -32,15 +32,26 @@ struct RenderedFrame {
   double renderMs = 0.0;          // the renderer's whole frame, readback included
   nlohmann::ordered_json timing;  // its own figures (pass times, maps rendered/reused...)
   std::size_t strataShadowMaps = 0;  // OpenGL's soft shadows: maps along strata draws
+  // The picture is display-referred (a composite into an 8-bit plate): encode it as sRGB with
+  // no tone mapping, so what the camera saw comes out as it came in.
+  bool displayReferred = false;
+  // --plate: the lights' age at the picture and the plate's state (status_text.h's LightCounts).
+  std::optional<double> lightAgeSec;
+  std::string plateState;
 };
 
 class FrameRenderer {
  public:
   virtual ~FrameRenderer() = default;
   [[nodiscard]] virtual std::string name() const = 0;  // "OpenGL (llvmpipe, software)", ...
-  [[nodiscard]] virtual RenderedFrame render(const scene::OrbitCamera& camera,
+  [[nodiscard]] virtual RenderedFrame render(const scene::ViewCamera& camera,
                                              const render::ShadingLights& lights,
                                              const InputFrame& input) = 0;
+  // A renderer with an input of its own (--plate's pictures) polls it before each frame: the
+  // version changes when a new picture came (the frame is redrawn), and ownInputEnded() once a
+  // file source (a video, a sequence) has no more. 0 and false for the others.
+  [[nodiscard]] virtual std::uint64_t pollOwnInput() { return 0; }
+  [[nodiscard]] virtual bool ownInputEnded() const { return false; }
   // Shows the last frame tone-mapped, with `overlay` text lines (windows only).
   virtual void present(const render::ToneParams& /*tone*/, const std::string& /*overlay*/) {}
   // False once the user closed the window.

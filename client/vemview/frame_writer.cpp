@@ -6,6 +6,11 @@
 
 namespace vem::view {
 
+std::vector<std::uint8_t> frameSrgb8(const render::LinearImage& image, bool displayReferred,
+                                     const render::ToneParams& tone) {
+  return displayReferred ? render::displaySrgb8(image) : render::toneMappedSrgb8(image, tone);
+}
+
 std::expected<FrameWriter, std::string> FrameWriter::open(const std::filesystem::path& folder,
                                                           bool png, bool exr) {
   std::error_code error;
@@ -28,7 +33,7 @@ std::expected<void, std::string> FrameWriter::write(const FrameRecord& record,
                                                     const render::ToneParams& tone) {
   const std::string stem = fmt::format("frame-{:06}", record.frame);
   if (png_ && record.drawn) {
-    const auto srgb = render::toneMappedSrgb8(image, tone);
+    const auto srgb = frameSrgb8(image, record.displayReferred, tone);
     const auto path = folder_ / (stem + ".png");
     if (auto saved = render::saveSrgbPng(srgb, image.widthPx, image.heightPx, path); !saved) {
       return std::unexpected(saved.error());

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -22,8 +23,15 @@ struct FrameRecord {
   std::uint64_t frame = 0;
   std::uint64_t inputSeq = 0;
   bool drawn = true;
+  bool displayReferred = false;  // frameSrgb8: encode as it is, no tone mapping
   nlohmann::ordered_json timing;  // the renderer's own figures, merged into the line
 };
+
+// The 8-bit sRGB picture of a frame, as the PNG and the video hold it: tone-mapped, or, for a
+// display-referred frame (a composite into an 8-bit plate), encoded as it is.
+[[nodiscard]] std::vector<std::uint8_t> frameSrgb8(const render::LinearImage& image,
+                                                   bool displayReferred,
+                                                   const render::ToneParams& tone);
 
 class FrameWriter {
  public:

@@ -25,7 +25,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 class GlFrameRenderer final : public FrameRenderer {
  public:
   GlFrameRenderer(const ViewerOptions& options, const RenderPlan& plan,
-                  const scene::Scene& scene, std::unique_ptr<gl::GlContext> context,
+                  const scene::Scene& scene, std::shared_ptr<gl::GlContext> context,
                   std::unique_ptr<gl::GlRenderer> renderer)
       : options_(options),
         softShadowMaps_(plan.softShadows ? plan.softShadowMaps : 0),
@@ -47,9 +47,10 @@ class GlFrameRenderer final : public FrameRenderer {
                        context_->isWindow() ? ", window" : ", headless (EGL)");
   }
 
-  RenderedFrame render(const scene::OrbitCamera& camera, const render::ShadingLights& lights,
+  RenderedFrame render(const scene::ViewCamera& camera, const render::ShadingLights& lights,
                        const InputFrame& input) override {
     const auto start = std::chrono::steady_clock::now();
+    context_->makeCurrent();  // the context may be shared (the composite's two layers)
     RenderedFrame frame;
     const PrefilteredEnvironment::Current environment = environment_.forCube(input.cube, materials_);
     if (environment.builtMs) frame.timing["prefilter_ms"] = *environment.builtMs;
@@ -156,7 +157,7 @@ class GlFrameRenderer final : public FrameRenderer {
   SoftKey softKey_;
   std::vector<scene::Material> materials_;
   PrefilteredEnvironment environment_;
-  std::unique_ptr<gl::GlContext> context_;
+  std::shared_ptr<gl::GlContext> context_;
   std::unique_ptr<gl::GlRenderer> renderer_;
   std::vector<std::uint8_t> lastDisplay_;
   std::string title_;
@@ -166,12 +167,16 @@ class GlFrameRenderer final : public FrameRenderer {
 
 std::expected<std::unique_ptr<FrameRenderer>, std::string> makeGlFrameRenderer(
     const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
-    const render::LightingGeometry& geometry) {
-  auto context = options.headless
-                     ? gl::GlContext::headless(options.widthPx, options.heightPx)
-                     : gl::GlContext::window(options.widthPx, options.heightPx, "vemview");
+    const render::LightingGeometry& geometry, std::shared_ptr<gl::GlContext> shared) {
+  std::shared_ptr<gl::GlContext> context = std::move(shared);
   if (!context) {
-    return std::unexpected(context.error());
+    auto made = options.headless
+                    ? gl::GlContext::headless(options.widthPx, options.heightPx)
+                    : gl::GlContext::window(options.widthPx, options.heightPx, "vemview");
+    if (!made) {
+      return std::unexpected(made.error());
+    }
+    context = std::move(*made);
   }
   gl::GlRendererOptions glOptions;
   glOptions.widthPx = options.widthPx;
@@ -182,11 +187,12 @@ std::expected<std::unique_ptr<FrameRenderer>, std::string> makeGlFrameRenderer(
   glOptions.presentToWindow = !options.headless;
   glOptions.environmentCoverage = plan.cubeMapCoverage;
   glOptions.geometry = &geometry;
+  context->makeCurrent();
   auto renderer = gl::GlRenderer::create(scene, glOptions);
   if (!renderer) {
     return std::unexpected(renderer.error());
   }
-  return std::make_unique<GlFrameRenderer>(options, plan, scene, std::move(*context),
+  return std::make_unique<GlFrameRenderer>(options, plan, scene, std::move(context),
                                            std::move(*renderer));
 }
 

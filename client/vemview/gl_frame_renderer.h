@@ -7,12 +7,15 @@
 #include <memory>
 #include <string>
 
+#include "client/gl/gl_context.h"
 #include "client/vemview/frame_renderer.h"
 
 namespace vem::view {
 
+// `context`: a GL context to render in, shared with other renderers (the composite's two layers);
+// null: its own, a window or headless as the options say.
 [[nodiscard]] std::expected<std::unique_ptr<FrameRenderer>, std::string> makeGlFrameRenderer(
     const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
-    const render::LightingGeometry& geometry);
+    const render::LightingGeometry& geometry, std::shared_ptr<gl::GlContext> context = nullptr);
 
 }  // namespace vem::view

@@ -31,6 +31,9 @@ struct InputFrame {
   std::uint64_t cubeVersion = 0;           // changes when the cube map does
   std::shared_ptr<const EnvMap> map;       // the map file's map (reference renderer), else null
   std::size_t clusteredFrom = 0;  // lights are clusters already: how many lights they stand for
+  // When the light probe's frame was captured (the stream's capture time, CLOCK_REALTIME), for
+  // the age of the lights against a live plate's picture; nothing for files.
+  std::optional<double> captureUnixSec;
 };
 
 struct InputFacts {

@@ -109,7 +109,36 @@ std::string RenderPlan::describe() const {
   if (lighting.clusterBudget > 0) {
     text += fmt::format(", clustering Q {}", lighting.clusterBudget);
   }
+  if (composite) {
+    text += fmt::format(
+        "; composite into {} seen by {}: {} ({}); local scene: the floor plane{}",
+        composite->plate, composite->camera,
+        composite->differential
+            ? "differential (the objects' shadows on the real surfaces; the render without them "
+              "is kept while the lights are unchanged)"
+            : "objects drawn over the plate, no differential pass",
+        composite->reason,
+        composite->proxyMeshes > 0 ? fmt::format(" and {} proxy meshes", composite->proxyMeshes)
+                                   : std::string());
+  }
   return text;
+}
+
+CompositePlan compositePlanFor(const scene::Scene& objects, std::size_t proxyMeshes) {
+  CompositePlan plan;
+  plan.proxyMeshes = proxyMeshes;
+  if (objects.meshes.empty()) {
+    plan.reason = "nothing synthetic to shadow the local scene";
+    return plan;
+  }
+  bool aboveFloor = false;
+  for (const scene::Mesh& mesh : objects.meshes) {
+    for (const glm::vec3& p : mesh.positions) aboveFloor = aboveFloor || p.y > 0.0F;
+  }
+  plan.differential = aboveFloor || proxyMeshes > 0;
+  plan.reason = plan.differential ? "objects stand above the floor and can shadow it"
+                                  : "every object lies below the floor: none can shadow it";
+  return plan;
 }
 
 FrameDecision decideFrame(const std::optional<FrameState>& last, const FrameState& now) {
@@ -118,7 +147,8 @@ FrameDecision decideFrame(const std::optional<FrameState>& last, const FrameStat
   }
   const bool lightsChanged = last->inputSeq != now.inputSeq || last->lightCount != now.lightCount;
   const bool cameraChanged = last->cameraVersion != now.cameraVersion;
-  return FrameDecision{lightsChanged || cameraChanged, lightsChanged};
+  const bool plateChanged = last->plateVersion != now.plateVersion;
+  return FrameDecision{lightsChanged || cameraChanged || plateChanged, lightsChanged};
 }
 
 }  // namespace vem::view

@@ -50,6 +50,22 @@ struct PlanRequest {
   bool softShadows = false;     // --soft-shadows
 };
 
+// Mixed reality (--plate; composite_frame_renderer.h): whether the objects get the differential
+// pass (their shadows on the local scene, Debevec 1998) or are only drawn over the plate, and why;
+// what the plate and its camera are, for the plan line.
+struct CompositePlan {
+  bool differential = false;
+  std::string reason;
+  std::string plate;   // the plate source's description
+  std::string camera;  // the plate camera's
+  std::size_t proxyMeshes = 0;
+};
+
+// The differential pass runs when something synthetic can shadow the local scene: an object with
+// a vertex above the floor plane (y > 0 in the plate's world), or proxies it may shadow; none when
+// the scene has no objects.
+[[nodiscard]] CompositePlan compositePlanFor(const scene::Scene& objects, std::size_t proxyMeshes);
+
 struct RenderPlan {
   bool glossyPass = false;
   bool cubeMap = false;
@@ -77,6 +93,7 @@ struct RenderPlan {
   bool softShadows = false;
   std::size_t softShadowMaps = 0;  // OpenGL's maps with soft shadows: S as asked (0 without)
   std::string softShadowReason;    // why not, when asked for and off
+  std::optional<CompositePlan> composite;  // --plate
 
   [[nodiscard]] std::string describe() const;  // one line for the start and the status line
 };
@@ -93,6 +110,7 @@ struct FrameState {
   std::uint64_t inputSeq = 0;
   std::uint64_t cameraVersion = 0;
   std::size_t lightCount = 0;
+  std::uint64_t plateVersion = 0;  // --plate: the picture composited into (a new one: redraw)
 };
 
 struct FrameDecision {

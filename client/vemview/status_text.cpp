@@ -1,5 +1,7 @@
 #include "client/vemview/status_text.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace vem::view {
@@ -23,7 +25,7 @@ LightCounts lightCountsOf(const render::ShadingLights& shading, std::size_t clus
                           std::size_t shadowMapsPlanned) {
   const std::size_t diffuse = shading.diffuse.lights.size();
   return LightCounts{clusteredFrom > 0 ? clusteredFrom : diffuse, clusteredFrom > 0 ? diffuse : 0,
-                     shading.shadowDirs.size(), shadowMapsPlanned};
+                     shading.shadowDirs.size(), shadowMapsPlanned, 0, std::nullopt, {}};
 }
 
 std::string lightCountsText(const LightCounts& counts) {
@@ -36,6 +38,13 @@ std::string lightCountsText(const LightCounts& counts) {
               : fmt::format(" | shadow maps {} of {}", counts.shadowMaps, counts.shadowMapsPlanned);
   if (counts.strataShadowMaps > 0) {
     text += fmt::format(" (soft: {} maps along strata draws)", counts.strataShadowMaps);
+  }
+  if (counts.lightAgeSec) {
+    text += fmt::format(" | lights {:.3f} s {} than the picture", std::abs(*counts.lightAgeSec),
+                        *counts.lightAgeSec >= 0.0 ? "older" : "newer");
+  }
+  if (!counts.plateState.empty()) {
+    text += " | plate " + counts.plateState;
   }
   return text;
 }

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "client/render/shading_lights.h"
@@ -22,6 +23,10 @@ struct LightCounts {
   std::size_t shadowMaps = 0;         // lights drawn with a shadow map of their own
   std::size_t shadowMapsPlanned = 0;  // S of the plan (0: the plan has no shadow maps)
   std::size_t strataShadowMaps = 0;   // soft shadows: the maps that look along strata draws
+  // --plate: how much older the lights are than the picture (live camera and stream), and the
+  // plate's state when it is not a fresh picture ("ended: keeping the last picture").
+  std::optional<double> lightAgeSec;
+  std::string plateState;
 };
 
 // The counts of a frame's shading lights. clusteredFrom: when its diffuse lights are clusters

@@ -23,6 +23,9 @@ class StreamLightInput final : public LightInput {
     if (auto received = client_->waitForLightFrame(after, wait)) {
       InputFrame frame;
       frame.seq = received->frame.seq;
+      if (received->frame.captureUnixNs > 0) {
+        frame.captureUnixSec = double(received->frame.captureUnixNs) * 1e-9;
+      }
       frame.lights = std::make_shared<const LightSet>(std::move(received->frame.lights));
       last_ = frame;
     }

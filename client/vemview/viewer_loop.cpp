@@ -13,12 +13,15 @@
 #include "client/render/tone_mapping.h"
 #include "client/scene/orbit_camera.h"
 #include "client/vemview/adaptive_light_count.h"
+#include "client/vemview/composite_frame_renderer.h"
+#include "client/vemview/composite_setup.h"
 #include "client/vemview/frame_renderer.h"
 #include "client/vemview/frame_writer.h"
 #include "client/vemview/light_input.h"
 #include "client/vemview/render_plan.h"
 #include "client/vemview/scene_argument.h"
 #include "client/vemview/status_line.h"
+#include "client/vemview/video_output.h"
 
 namespace vem::view {
 namespace {
@@ -86,6 +89,7 @@ struct Viewer {
   scene::OrbitCamera camera;
   std::uint64_t cameraVersion = 1;
   std::optional<FrameWriter> writer;
+  std::optional<VideoOutput> video;
   std::optional<AdaptiveLightCount> adaptive;
   render::ToneSmoother tone{0.5};
   std::optional<FrameState> lastDrawn;
@@ -129,9 +133,9 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
     ++v.cameraVersion;
   }
   const std::size_t count = v.adaptive ? v.adaptive->count() : v.plan.lighting.lightCount;
-  const FrameState state{frame->seq, v.cameraVersion, count};
+  const FrameState state{frame->seq, v.cameraVersion, count, v.renderer->pollOwnInput()};
   const FrameDecision decision = decideFrame(v.lastDrawn, state);
-  FrameRecord record{frameIndex, frame->seq, decision.redraw, {}};
+  FrameRecord record{frameIndex, frame->seq, decision.redraw, false, {}};
   double shadingMs = 0.0;
   if (decision.lightsChanged) {
     const auto start = Clock::now();
@@ -160,8 +164,18 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   LightCounts counts =
       lightCountsOf(v.shading, clusteredFrom(v, *frame, count), v.plan.lighting.shadowedCount);
   counts.strataShadowMaps = v.last.strataShadowMaps;
+  counts.lightAgeSec = v.last.lightAgeSec;
+  counts.plateState = v.last.plateState;
   v.status.add(decision.redraw, v.last.renderMs, counts);
   v.renderer->present(tone, v.status.overlay());
+  record.displayReferred = v.last.displayReferred;
+  if (v.video && decision.redraw) {
+    const auto srgb = frameSrgb8(v.last.image, v.last.displayReferred, tone);
+    if (auto written = v.video->write(srgb, v.last.image.widthPx, v.last.image.heightPx);
+        !written) {
+      return std::unexpected(written.error());
+    }
+  }
   if (v.writer) {
     if (auto written = v.writer->write(record, v.last.image, tone); !written) {
       return std::unexpected(written.error());
@@ -171,6 +185,10 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   v.status.maybePrint(Clock::now());
   if (!decision.redraw && !v.options.headless) {
     std::this_thread::sleep_for(kIdleWait);  // nothing changed: do not spin the window loop
+  }
+  if (v.renderer->ownInputEnded() && v.options.headless) {
+    fmt::print(stderr, "vemview: the plate ended after frame {}; stopping\n", frameIndex);
+    return false;
   }
   return v.renderer->open();
 }
@@ -198,11 +216,32 @@ int runViewer(const ViewerOptions& options) {
     spdlog::error("{}", input.error());
     return EXIT_FAILURE;
   }
-  RenderPlan plan = planFor(*scene, requestFor(options, (*input)->facts()));
+  std::optional<CompositeSetup> composite;
+  if (!options.plate.empty()) {
+    const std::optional<InputFrame> first = (*input)->next(
+        std::chrono::milliseconds(int(options.streamTimeoutSec * 1000)));
+    if (!first) {
+      spdlog::error("{}: no lights arrived within {} s", (*input)->facts().description,
+                    options.streamTimeoutSec);
+      return EXIT_FAILURE;
+    }
+    auto setup = setUpComposite(options, *scene, *first);
+    if (!setup) {
+      spdlog::error("{}", setup.error());
+      return EXIT_FAILURE;
+    }
+    composite = std::move(*setup);
+  }
+  const scene::Scene& drawn = composite ? composite->composition.withObjects : *scene;
+  RenderPlan plan = planFor(drawn, requestFor(options, (*input)->facts()));
+  if (composite) plan.composite = composite->plan;
   Viewer v(options, std::move(plan), std::move(*input), cameraFor(*scene, options));
   fmt::print(stderr, "vemview: scene {} ({} meshes, {} triangles), input {}\n", scene->name,
              scene->meshes.size(), scene::triangleCount(*scene), v.input->facts().description);
-  auto renderer = makeFrameRenderer(options, v.plan, *scene, v.geometry);
+  auto renderer = composite ? makeCompositeFrameRenderer(options, v.plan, composite->composition,
+                                                         v.geometry, std::move(composite->plate),
+                                                         std::move(composite->view))
+                            : makeFrameRenderer(options, v.plan, *scene, v.geometry);
   if (!renderer) {
     spdlog::error("{}", renderer.error());
     return EXIT_FAILURE;
@@ -213,6 +252,7 @@ int runViewer(const ViewerOptions& options) {
   }
   fmt::print(stderr, "vemview: renderer {}\n", v.renderer->name());
   v.writer = std::move(writer);
+  if (!options.videoFile.empty()) v.video.emplace(options.videoFile);
   if (v.plan.targetFrameMs) {
     v.adaptive.emplace(*v.plan.targetFrameMs, v.plan.lighting.lightCount, 4, 4096);
   }

@@ -56,7 +56,8 @@ void addInputOptions(CLI::App& app, ViewerOptions& o) {
   connect->excludes(lights)->excludes(map);
   lights->excludes(map);
   app.add_option("--scene", o.scene,
-                 "Scene file (.obj, .gltf, .glb) or built-in: default, diffuse, spheres, sphere")
+                 "Scene file (.obj, .gltf, .glb) or built-in: default, diffuse, spheres, sphere, "
+                 "mixed-reality (--plate's default: two spheres, no ground)")
       ->capture_default_str();
   app.add_flag("--scene-allow-outside", o.sceneAllowOutside,
                "Let the scene file reference files outside its folder (OBJ mtllib, glTF buffer "
@@ -143,6 +144,28 @@ void addCameraOptions(CLI::App& app, ViewerOptions& o) {
       ->capture_default_str();
 }
 
+void addPlateOptions(CLI::App& app, ViewerOptions& o) {
+  app.add_option("--plate", o.plate,
+                 "Composite the scene into the scene camera's picture: an image (PNG, JPEG, "
+                 "EXR), an image sequence (frames/%04d.png), a video file (MP4, MKV), "
+                 "v4l2:/dev/videoN, or sim (the simulated real world, no camera)");
+  app.add_option("--plate-camera", o.plateCamera,
+                 "The scene camera's calibration (vemcalib plate ...; not with --plate sim)");
+  app.add_option("--local-scene", o.localScene,
+                 "Proxy meshes of the real surfaces beyond the floor plane (.obj, .gltf, .glb)");
+  app.add_option_function<std::vector<double>>(
+         "--place",
+         [&o](const std::vector<double>& v) {
+           o.place = Placement{v[0], v[1], v[2], v[3]};
+         },
+         "Move the scene's objects to x,y,z (metres, the plate's world) and turn them by yaw "
+         "degrees about +Y")
+      ->delimiter(',')
+      ->expected(4);
+  app.add_option("--video", o.videoFile, "Headless with --plate: also write the frames as a "
+                                         "video (MP4, OpenCV's VideoWriter)");
+}
+
 // CLI11 names a value after its parser and its checks ("TEXT", "INT:INT in [16 - 8192]",
 // "FLOAT:POSITIVE"); --help shows what the value is ("URL", "DEGREES") and, for a range, the
 // range ("16..8192"). Choice lists are left to util/cli_conventions.h ("gl|embree|reference").
@@ -151,7 +174,9 @@ void plainValueNames(CLI::App& app) {
       {"--connect", "URL"},   {"--token", "TOKEN"},     {"--lights", "FILE"},
       {"--map", "FILE"},      {"--scene", "NAME|FILE"}, {"--frames", "N"},
       {"--out", "DIR"},       {"--screenshot", "FILE"}, {"--target-ms", "MS"},
-      {"--orbit", "DEGREES"}, {"--azimuth", "DEGREES"}, {"--timeout", "SECONDS"}};
+      {"--orbit", "DEGREES"}, {"--azimuth", "DEGREES"}, {"--timeout", "SECONDS"},
+      {"--plate", "SOURCE"},  {"--plate-camera", "FILE"}, {"--local-scene", "FILE"},
+      {"--place", "X,Y,Z,YAW"}, {"--video", "FILE"}};
   static const std::regex kRange{R"(^\S+ in \[(\S+) - (\S+)\]$)"};
   for (CLI::Option* option : app.get_options()) {
     if (const auto named = kNames.find(option->get_name()); named != kNames.end()) {
@@ -176,6 +201,32 @@ void plainValueNames(CLI::App& app) {
   }
 }
 
+// Why --plate cannot run with the other options given, in one sentence, or empty.
+std::string plateOptionsRefused(const CLI::App& app, const ViewerOptions& o) {
+  if (!o.headless) {
+    return "--plate composites headless for now (--headless --out DIR, --video FILE): the "
+           "window's composite comes with the OpenGL one";
+  }
+  if (o.renderer == RendererKind::Reference) {
+    return "--plate composites with the lights: give --renderer gl or embree, not reference";
+  }
+  if (app.count("--shading") > 0 && o.shading != ShadingKind::Ratio) {
+    return "--plate shades by ratio (the differential render's model): leave --shading out";
+  }
+  if (o.plate == "sim" && !o.plateCamera.empty()) {
+    return "--plate sim films the simulated world with its own camera: leave --plate-camera out";
+  }
+  if (o.plate != "sim" && o.plateCamera.empty()) {
+    return "--plate " + o.plate + " needs the scene camera's calibration: give --plate-camera "
+           "FILE (vemcalib plate ...)";
+  }
+  if (o.plate == "sim" && (!o.connectUrl.empty() || !o.lightFile.empty())) {
+    return "--plate sim renders the simulated world under an environment map: give --map FILE "
+           "or no input (the default map), not --connect or --lights";
+  }
+  return {};
+}
+
 }  // namespace
 
 std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
@@ -185,6 +236,7 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
   addOutputOptions(app, o);
   addLightingOptions(app, o);
   addCameraOptions(app, o);
+  addPlateOptions(app, o);
   plainValueNames(app);
   app.footer(  // the conventions put the exit statuses below it
       "Examples:\n"
@@ -196,6 +248,18 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return std::unexpected(cli::exitStatusFor(app, e));
+  }
+  if (!o.plate.empty()) {
+    if (auto refused = plateOptionsRefused(app, o); !refused.empty()) {
+      std::cerr << "vemview: error: " << refused << "\n";
+      return std::unexpected(cli::kExitUsage);
+    }
+    o.shading = ShadingKind::Ratio;  // the differential render shades by ratio (issue 20)
+    if (app.count("--scene") == 0) o.scene = "mixed-reality";
+  } else if (!o.plateCamera.empty() || !o.localScene.empty() || o.place || !o.videoFile.empty()) {
+    std::cerr << "vemview: error: --plate-camera, --local-scene, --place and --video composite "
+                 "into a plate: give --plate SOURCE too\n";
+    return std::unexpected(cli::kExitUsage);
   }
   if (o.renderer == RendererKind::Reference && (!o.connectUrl.empty() || !o.lightFile.empty())) {
     std::cerr << "vemview: error: --renderer reference integrates an environment map: give it "

@@ -14,6 +14,15 @@ enum class RendererKind { Gl, Embree, Reference };
 // prefiltered environment with the lights' shadowing ratio (embree_frame_renderer.h).
 enum class ShadingKind { Lights, Ratio };
 
+// --place x,y,z,yaw: the objects moved to (x, y, z) metres of the plate's world and turned by yaw
+// degrees about +Y.
+struct Placement {
+  double xM = 0.0;
+  double yM = 0.0;
+  double zM = 0.0;
+  double yawDeg = 0.0;
+};
+
 struct ViewerOptions {
   // Input: exactly one of these (none: the map of kDefaultMap from the shared data).
   std::string connectUrl;
@@ -51,6 +60,15 @@ struct ViewerOptions {
   double referenceError = 0.01;
   std::size_t referenceMaxSamples = 4096;
   double streamTimeoutSec = 10.0;
+  // Mixed reality (issue 21; composite_frame_renderer.h): the scene camera's picture to composite
+  // the scene into (plate_source.h: an image, an image sequence, a video, v4l2:/dev/videoN, or
+  // sim), its calibration (a plate-camera file; none with sim), the real surfaces beyond the
+  // floor plane, where the objects stand, and a video of the composite.
+  std::string plate;
+  std::string plateCamera;
+  std::string localScene;
+  std::optional<Placement> place;
+  std::string videoFile;
 };
 
 // The options, or the exit status (util/cli_conventions.h: 0 after --help, 2 for a usage error)

@@ -41,6 +41,19 @@ TEST(StatusText, SlowRateKeepsTwoSignificantDigitsNotZero) {
             "3 frames, 0.043 frames/s, 22355.3 ms each");
 }
 
+// The issue asks the composite to show how old its lights are against the picture, and that a
+// stopped plate keeps its last picture: both were missing from the status line.
+TEST(StatusText, LightAgeAndAStoppedPlateShowInTheStatusLine) {
+  LightCounts counts{16, 0, 16, 16, 0, 0.125, "stopped: keeping the last picture"};
+  EXPECT_EQ(lightCountsText(counts),
+            "lights 16 | shadow maps 16 of 16 | lights 0.125 s older than the picture | plate "
+            "stopped: keeping the last picture");
+  counts.lightAgeSec = -0.02;
+  counts.plateState.clear();
+  EXPECT_EQ(lightCountsText(counts),
+            "lights 16 | shadow maps 16 of 16 | lights 0.020 s newer than the picture");
+}
+
 // A clustered light file said "lights 11 | shadowed 11 | lights 256, shadow maps 64".
 TEST(StatusText, ClusteredLightsAreOneNamedCountNotThreeNumbers) {
   const LightCounts counts = lightCountsOf(shadingWith(11, 11), 256, 64);

@@ -11,7 +11,12 @@
 
 #include "bench/render/reference_cache.h"
 #include "bench/render/study_setup.h"
-#include "client/embree/differential_renderer.h"
+#include "client/embree/light_renderer.h"
+#include "client/gl/gl_context.h"
+#include "client/gl/gl_renderer.h"
+#include "client/render/shadow_draws.h"
+#include "client/render/soft_shadows.h"
+#include "client/embree/surface_classes.h"
 #include "client/render/environment_lighting.h"
 #include "client/render/image_files.h"
 #include "client/render/image_metrics.h"
@@ -88,30 +93,122 @@ scene::ViewCamera followingYaw(scene::ViewCamera camera, float angleRad) {
   return camera;
 }
 
+// The composition's two scenes as Embree builds them.
+struct LayerScenes {
+  embree::EmbreeScene withObjects;
+  embree::EmbreeScene localOnly;
+  std::vector<bool> objectMeshes;
+};
+
+std::expected<LayerScenes, std::string> layerScenesOf(const scene::LocalComposition& c) {
+  auto withObjects = embree::EmbreeScene::build(c.withObjects);
+  auto localOnly = embree::EmbreeScene::build(c.localOnly);
+  if (!withObjects) return std::unexpected(withObjects.error());
+  if (!localOnly) return std::unexpected(localOnly.error());
+  return LayerScenes{std::move(*withObjects), std::move(*localOnly), c.objectMeshes};
+}
+
 struct Composited {
   render::LinearImage differential;
   render::LinearImage pasted;
-  embree::DifferentialTiming timing;
+  double withMs = 0.0;      // the render with the objects and the surface classes
+  double withoutMs = 0.0;   // the render without them (skipped while the lights are unchanged)
   double compositeMs = 0.0;
-  double plainMs = 0.0;  // the objects and local scene in one render, no composite
 };
 
-Composited compositeOnce(embree::DifferentialRenderer& renderer, const scene::ViewCamera& camera,
+Composited compositeOnce(const LayerScenes& scenes, const scene::ViewCamera& camera,
                          const StudyImageSize& size, const render::ShadingLights& lights,
                          const render::LightingGeometry& geometry, const StudyMap& map,
                          const embree::LightRenderOptions& lightOptions,
-                         const render::LinearImage& plate, std::uint64_t key) {
+                         const render::LinearImage& plate) {
   Composited out;
-  render::DifferentialLayers layers =
-      renderer.render(camera, size.widthPx, size.heightPx, lights, geometry, &map.cube,
-                      lightOptions, key, &out.timing);
-  const auto start = std::chrono::steady_clock::now();
+  render::DifferentialLayers layers;
+  auto start = std::chrono::steady_clock::now();
+  layers.withObjects = embree::renderWithLights(scenes.withObjects, camera, size.widthPx,
+                                                size.heightPx, lights, geometry, &map.cube,
+                                                lightOptions);
+  layers.classes = embree::surfaceClasses(scenes.withObjects, scenes.objectMeshes, camera,
+                                          size.widthPx, size.heightPx, lightOptions.threadCount);
+  out.withMs = msSince(start);
+  start = std::chrono::steady_clock::now();
+  layers.withoutObjects = embree::renderWithLights(scenes.localOnly, camera, size.widthPx,
+                                                   size.heightPx, lights, geometry, &map.cube,
+                                                   lightOptions);
+  out.withoutMs = msSince(start);
+  start = std::chrono::steady_clock::now();
   render::AlbedoEstimate albedo;
   const render::PlateColour colour;
   albedo.update(plate, layers.withoutObjects, colour);
   out.differential = render::compositeDifferential(plate, layers, albedo, colour);
   out.compositeMs = msSince(start);
   out.pasted = render::compositePasted(plate, layers, colour);
+  return out;
+}
+
+// The OpenGL layers: the two scenes' renderers in one headless context, as vemview's composite.
+struct GlLayers {
+  std::unique_ptr<gl::GlContext> context;
+  std::unique_ptr<gl::GlRenderer> withObjects;
+  std::unique_ptr<gl::GlRenderer> localOnly;
+  std::string name;
+};
+
+std::expected<GlLayers, std::string> glLayersOf(const scene::LocalComposition& c,
+                                               const StudyImageSize& size,
+                                               const render::LightingGeometry& geometry,
+                                               std::size_t maxShadowMaps, int shadowMapPx) {
+  GlLayers out;
+  auto context = gl::GlContext::headless(size.widthPx, size.heightPx);
+  if (!context) return std::unexpected(context.error());
+  out.context = std::move(*context);
+  out.name = fmt::format("OpenGL {} on {}", out.context->versionString(),
+                         out.context->timingLabel());
+  gl::GlRendererOptions options;
+  options.widthPx = size.widthPx;
+  options.heightPx = size.heightPx;
+  options.maxShadowMaps = maxShadowMaps;
+  options.shadowMapPx = shadowMapPx;
+  options.geometry = &geometry;
+  auto with = gl::GlRenderer::create(c.withObjects, options);
+  if (!with) return std::unexpected(with.error());
+  auto without = gl::GlRenderer::create(c.localOnly, options);
+  if (!without) return std::unexpected(without.error());
+  out.withObjects = std::move(*with);
+  out.localOnly = std::move(*without);
+  return out;
+}
+
+// vemview's OpenGL composite: the lights with the maps beyond N spent on the strata (soft
+// shadows), both layers drawn with them, the classes from the primary rays.
+Composited compositeOnceGl(GlLayers& layers, const LayerScenes& scenes,
+                           const scene::ViewCamera& camera, const StudyImageSize& size,
+                           const render::ShadingLights& lights, std::size_t maxShadowMaps,
+                           const StudyMap& map, const render::EnvironmentLighting& environment,
+                           std::uint64_t version, const render::LinearImage& plate) {
+  Composited out;
+  render::ShadingLights soft = lights;
+  (void)render::spendShadowMapsOnStrata(
+      soft, render::buildShadowStrata(lights.diffuse.lights, map.cube), maxShadowMaps);
+  soft.lightsKey = version;  // every timed frame draws its maps
+  const gl::RatioShading ratio{&environment, version};
+  render::DifferentialLayers rendered;
+  auto start = std::chrono::steady_clock::now();
+  (void)layers.withObjects->render(camera, soft, &map.cube, version, ratio);
+  rendered.withObjects = layers.withObjects->readLinear();
+  rendered.classes = embree::surfaceClasses(scenes.withObjects, scenes.objectMeshes, camera,
+                                            size.widthPx, size.heightPx, 2);
+  out.withMs = msSince(start);
+  start = std::chrono::steady_clock::now();
+  (void)layers.localOnly->render(camera, soft, &map.cube, version, ratio);
+  rendered.withoutObjects = layers.localOnly->readLinear();
+  out.withoutMs = msSince(start);
+  start = std::chrono::steady_clock::now();
+  render::AlbedoEstimate albedo;
+  const render::PlateColour colour;
+  albedo.update(plate, rendered.withoutObjects, colour);
+  out.differential = render::compositeDifferential(plate, rendered, albedo, colour);
+  out.compositeMs = msSince(start);
+  out.pasted = render::compositePasted(plate, rendered, colour);
   return out;
 }
 
@@ -167,18 +264,25 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
   scene::Scene local = scene::floorOnly();
   for (const scene::Mesh& mesh : world.proxies.meshes) local.meshes.push_back(mesh);
   const scene::LocalComposition composition = scene::composeWithLocal(world.objects, local);
-  auto renderer = embree::DifferentialRenderer::build(composition);
+  auto renderer = layerScenesOf(composition);
   if (!renderer) return std::unexpected(renderer.error());
   const scene::LocalComposition floorOnlyComposition =
       scene::composeWithLocal(world.objects, scene::floorOnly());
-  auto floorRenderer = embree::DifferentialRenderer::build(floorOnlyComposition);
+  auto floorRenderer = layerScenesOf(floorOnlyComposition);
   if (!floorRenderer) return std::unexpected(floorRenderer.error());
   const float yawErrorRad = 2.0F * 3.14159265F / 180.0F;
   const scene::LocalComposition yawed =
       scene::composeWithLocal(rotatedAboutY(world.objects, yawErrorRad),
                               rotatedAboutY(local, yawErrorRad));
-  auto yawRenderer = embree::DifferentialRenderer::build(yawed);
+  auto yawRenderer = layerScenesOf(yawed);
   if (!yawRenderer) return std::unexpected(yawRenderer.error());
+  std::optional<GlLayers> glLayers;
+  if (options.gl) {
+    auto made = glLayersOf(composition, options.size, geometry, options.glShadowMaps,
+                           options.glShadowMapPx);
+    if (!made) return std::unexpected("OpenGL: " + made.error());
+    glLayers = std::move(*made);
+  }
   auto withScene = studySceneSeenBy(composition.withObjects, camera);
   if (!withScene) return std::unexpected(withScene.error());
 
@@ -186,7 +290,6 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
   std::string timeRows;
   std::string registrationRows;
   std::string referenceRows;
-  std::uint64_t key = 1;
   for (const std::string& name : options.maps) {
     auto map = loadStudyMap(std::filesystem::path(options.hdriDir) / (name + ".exr"));
     if (!map) return std::unexpected(map.error());
@@ -208,7 +311,7 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
 
     // The shadow region: real surfaces the objects darken, from the two references.
     const std::vector<render::SurfaceClass> classes =
-        embree::surfaceClasses(renderer->withObjects(), composition.objectMeshes, camera,
+        embree::surfaceClasses(renderer->withObjects, composition.objectMeshes, camera,
                                options.size.widthPx, options.size.heightPx, 2);
     std::vector<std::uint8_t> shadowRegion(plate.pixelCount(), 0);
     std::size_t shadowPixels = 0;
@@ -238,48 +341,68 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
       lightOptions.softShadows = true;
       lightOptions.cubeCoverage = map->map.layout;
 
-      // Timed: a frame whose lights changed (both renders), then frames that reuse "without".
-      ++key;
+      // Timed: a frame whose lights changed (both renders), a frame whose lights did not (the
+      // render without the objects kept), and the plain render of objects and local scene.
       std::vector<double> fullMs;
       std::vector<double> reuseMs;
       std::vector<double> plainMs;
       Composited result;
       for (int frame = 0; frame < options.frames; ++frame) {
-        ++key;
-        auto start = std::chrono::steady_clock::now();
         result = compositeOnce(*renderer, camera, options.size, lights, geometry, *map,
-                               lightOptions, plate, key);
-        fullMs.push_back(msSince(start));
-        start = std::chrono::steady_clock::now();
-        (void)compositeOnce(*renderer, camera, options.size, lights, geometry, *map, lightOptions,
-                            plate, key);
-        reuseMs.push_back(msSince(start));
-        start = std::chrono::steady_clock::now();
-        (void)embree::renderWithLights(renderer->withObjects(), camera, options.size.widthPx,
+                               lightOptions, plate);
+        fullMs.push_back(result.withMs + result.withoutMs + result.compositeMs);
+        reuseMs.push_back(result.withMs + result.compositeMs);
+        const auto start = std::chrono::steady_clock::now();
+        (void)embree::renderWithLights(renderer->withObjects, camera, options.size.widthPx,
                                        options.size.heightPx, lights, geometry, &map->cube,
                                        lightOptions);
         plainMs.push_back(msSince(start));
+      }
+      std::string glErrors = "| | ";
+      std::optional<render::LinearImage> glComposite;
+      std::string glTimes = "| | ";
+      if (glLayers) {
+        std::vector<double> glFullMs;
+        std::vector<double> glReuseMs;
+        Composited glResult;
+        // OpenGL draws a map per light up to S (Embree's lights have none: it traces rays).
+        render::LightingOptions glLighting = lighting;
+        glLighting.shadowedCount = std::min(n, options.glShadowMaps);
+        render::ShadingLights glLights = studyLights(*map, *withScene, geometry, glLighting);
+        glLights.glossy.reset();
+        for (int frame = 0; frame < options.frames + 1; ++frame) {  // the first warms up
+          glResult = compositeOnceGl(*glLayers, *renderer, camera, options.size, glLights,
+                                     options.glShadowMaps, *map, at->second,
+                                     std::uint64_t(1000 * n + std::size_t(frame)), plate);
+          if (frame == 0) continue;
+          glFullMs.push_back(glResult.withMs + glResult.withoutMs + glResult.compositeMs);
+          glReuseMs.push_back(glResult.withMs + glResult.compositeMs);
+        }
+        const Errors e = errorsOf(glResult.differential, truth, shadowRegion);
+        glComposite = glResult.differential;
+        glErrors = fmt::format("| {} | {} ", pct(e.whole), pct(e.shadow));
+        glTimes = fmt::format("| {:.1f} | {:.1f} ", medianOf(glFullMs), medianOf(glReuseMs));
       }
       const Errors differential = errorsOf(result.differential, truth, shadowRegion);
       const Errors pasted = errorsOf(result.pasted, truth, shadowRegion);
       const Composited floorOnlyResult =
           compositeOnce(*floorRenderer, camera, options.size, lights, geometry, *map,
-                        lightOptions, plate, ++key);
+                        lightOptions, plate);
       const Errors floorOnlyErrors = errorsOf(floorOnlyResult.differential, truth, shadowRegion);
-      errorRows += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", name, n,
-                               pct(differential.whole), pct(differential.shadow),
+      errorRows += fmt::format("| {} | {} | {} | {} {}| {} | {} | {} | {} |\n", name, n,
+                               pct(differential.whole), pct(differential.shadow), glErrors,
                                pct(pasted.whole), pct(pasted.shadow),
                                fmt::format("{:.1f}x", pasted.shadow / differential.shadow),
                                pct(floorOnlyErrors.shadow));
-      timeRows += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f} |\n", name, n,
+      timeRows += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f} {}|\n", name, n,
                               medianOf(plainMs), medianOf(fullMs), medianOf(reuseMs),
-                              result.compositeMs);
+                              result.compositeMs, glTimes);
       if (n == kDumpCount) {
         for (const float degrees : {0.5F, 1.0F}) {
           const Composited off = compositeOnce(*renderer, tilted(camera, degrees * 3.14159265F /
                                                                              180.0F),
                                                options.size, lights, geometry, *map,
-                                               lightOptions, plate, ++key);
+                                               lightOptions, plate);
           const Errors e = errorsOf(off.differential, truth, shadowRegion);
           registrationRows +=
               fmt::format("| {} | plate camera tilted by {} degree | {} | {} | {} |\n", name,
@@ -287,7 +410,7 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
         }
         const Composited yawOff =
             compositeOnce(*yawRenderer, followingYaw(camera, yawErrorRad), options.size, lights,
-                          geometry, *map, lightOptions, plate, ++key);
+                          geometry, *map, lightOptions, plate);
         const Errors e = errorsOf(yawOff.differential, truth, shadowRegion);
         registrationRows += fmt::format("| {} | probe yaw off by 2 degrees | {} | {} | {} |\n",
                                         name, pct(e.whole), pct(e.wholeMeanAbs), pct(e.shadow));
@@ -308,28 +431,39 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
               differenceImage(result.pasted, truth, float(meanY));
           dumpRow(fmt::format("{}/composite-{}.png", options.dumpDir, name),
                   {&plate, &result.differential, &truth, &diff, &pastedDiff}, params);
+          if (glComposite) {
+            const render::LinearImage glDiff =
+                differenceImage(*glComposite, truth, float(meanY));
+            dumpRow(fmt::format("{}/composite-{}-gl.png", options.dumpDir, name),
+                    {&*glComposite, &truth, &glDiff}, params);
+          }
         }
       }
     }
-    errorRows += fmt::format("| {} | shadow region | {} pixels of {} | | | | |\n", name,
+    errorRows += fmt::format("| {} | shadow region | {} pixels of {} | | | | | | | |\n", name,
                              shadowPixels, plate.pixelCount());
   }
   std::string out = fmt::format(
       "Scene: `{}` filmed by its plate camera at {} x {} px; the synthetic objects: {}. Local "
       "scene: the floor plane and the proxies (box, wall). Lights: the map's first N Havran "
-      "lights, shading by ratio with soft shadows (Embree). References: "
-      "embree::renderReference to {} relative error.\n\n",
+      "lights, shading by ratio with soft shadows (Embree: a draw per light and pixel; {}: S = {} "
+      "shadow maps of {} px, those beyond N along the strata, the surface classes from Embree's "
+      "primary rays). References: embree::renderReference to {} relative error.\n\n",
       world.realSurfaces.name, options.size.widthPx, options.size.heightPx, world.objects.name,
+      glLayers ? glLayers->name : std::string("OpenGL (not run)"), options.glShadowMaps,
+      options.glShadowMapPx,
       pct(options.referenceError));
   out += "### Error against the truth (relative RMS)\n\n";
-  out += "| map | N | differential, whole | differential, shadow region | pasted, whole | "
-         "pasted, shadow region | pasted / differential in the shadows | floor plane only, "
-         "shadow region |\n|---|---|---|---|---|---|---|---|\n" +
+  out += "| map | N | Embree, whole | Embree, shadow region | OpenGL, whole | OpenGL, shadow "
+         "region | pasted, whole | pasted, shadow region | pasted / Embree in the shadows | "
+         "Embree with the floor plane only, shadow region |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n" +
          errorRows;
   out += "\n### Time per frame (ms, median)\n\n";
-  out += "| map | N | plain render (objects and local scene) | composite, lights changed | "
-         "composite, lights unchanged (\"without\" reused) | of which the composite itself "
-         "|\n|---|---|---|---|---|---|\n" +
+  out += "| map | N | Embree: plain render (objects and local scene) | Embree: composite, lights "
+         "changed | Embree: composite, lights unchanged (\"without\" reused) | of which the "
+         "composite itself | OpenGL: composite, lights changed | OpenGL: lights unchanged "
+         "|\n|---|---|---|---|---|---|---|---|\n" +
          timeRows;
   out += "\n### What a registration error costs (N = 256)\n\n| map | error | whole, relative RMS "
          "| whole, mean absolute | shadow region, relative RMS |\n|---|---|---|---|---|\n" +

@@ -51,6 +51,7 @@ struct BenchOptions {
   std::vector<std::size_t> counts;  // --materials: the light counts N (empty: the study's)
   std::size_t glShadowMaps = 256;   // --materials: OpenGL's shadow maps S = min(N, this)
   int cubeFacePx = 0;  // --materials: the cube maps' level 0 (0: as vemview's plan)
+  int shadowMapPx = 0;  // --composite: OpenGL's shadow-map size (0: the study's)
   bool softShadows = false;           // --materials: by ratio with soft shadows
   std::string dumpDir;
   std::string sweeps = "abcde";
@@ -100,6 +101,9 @@ int parse(int argc, char** argv, BenchOptions& o) {
   app.add_flag("--materials", o.materials,
                "the material study of issue 20 (a sphere on a plane, one material at a time, "
                "shading by the lights and by ratio) instead of the sweeps; writes --table");
+  app.add_option("--shadow-map-px", o.shadowMapPx,
+                 "with --composite: OpenGL's shadow-map size (default 1024)")
+      ->check(CLI::Range(64, 4096));
   app.add_flag("--composite", o.composite,
                "the mixed-reality study: objects composited into a simulated plate, against the "
                "truth (composite_study.h)");
@@ -269,6 +273,9 @@ int main(int argc, char** argv) {
     study.cacheDir = options.cacheDir;
     study.dumpDir = options.dumpDir;
     study.frames = options.embreeFrames;
+    study.gl = !options.noGl;
+    study.glShadowMaps = options.glShadowMaps;
+    if (options.shadowMapPx > 0) study.glShadowMapPx = options.shadowMapPx;
     if (!options.counts.empty()) study.counts = options.counts;
     auto report = runCompositeStudy(study);
     if (!report) return fail(report.error());

@@ -1,0 +1,200 @@
+#include "client/vemview/composite_frame_renderer.h"
+
+#include <chrono>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "client/embree/embree_scene.h"
+#include "client/embree/surface_classes.h"
+#include "client/render/layer_resampling.h"
+#include "client/vemview/embree_frame_renderer.h"
+#include "client/vemview/gl_frame_renderer.h"
+
+namespace vem::view {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// What the render without the objects depends on: the lights and the cube map (the camera and
+// the local scene are fixed for the run).
+struct WithoutKey {
+  std::uint64_t inputSeq = 0;
+  std::uint64_t cubeVersion = 0;
+  std::size_t lightCount = 0;
+  bool operator==(const WithoutKey&) const = default;
+};
+
+struct Layers {
+  std::unique_ptr<ViewerOptions> options;  // the renderers borrow it: the render size
+  std::unique_ptr<FrameRenderer> withObjects;
+  std::unique_ptr<FrameRenderer> withoutObjects;  // null with no differential pass
+  std::optional<embree::EmbreeScene> classesScene;
+  std::vector<bool> objectMeshes;
+};
+
+class CompositeFrameRenderer final : public FrameRenderer {
+ public:
+  CompositeFrameRenderer(const RenderPlan& plan, Layers layers,
+                         std::unique_ptr<PlateSource> plate, PlateView view)
+      : differential_(plan.composite && plan.composite->differential),
+        layers_(std::move(layers)),
+        plate_(std::move(plate)),
+        view_(std::move(view)) {}
+
+  std::string name() const override {
+    return fmt::format("composite (differential rendering into the plate) by {}",
+                       layers_.withObjects->name());
+  }
+
+  std::uint64_t pollOwnInput() override {
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<PlateFrame> picture = plate_->next();
+    decodeMs_ = msSince(start);
+    if (picture && (!last_ || picture->seq != last_->seq)) {
+      last_ = std::move(picture);
+      state_ = "new";
+    } else if (!picture) {
+      state_ = plate_->ended() ? (plate_->live() ? "stopped: keeping the last picture"
+                                                 : "ended: keeping the last picture")
+                               : "no new picture: keeping the last";
+    } else {
+      state_ = "still";
+    }
+    return last_ ? last_->seq : 0;
+  }
+
+  bool ownInputEnded() const override { return plate_->ended() && !plate_->live(); }
+
+  RenderedFrame render(const scene::ViewCamera& /*camera*/, const render::ShadingLights& lights,
+                       const InputFrame& input) override {
+    const auto start = std::chrono::steady_clock::now();
+    RenderedFrame frame;
+    frame.timing["plate_decode_ms"] = decodeMs_;
+    frame.timing["plate_seq"] = last_ ? last_->seq : 0;
+    frame.timing["plate_state"] = state_;
+    if (state_ != "new" && state_ != "still") frame.plateState = state_;
+    frame.timing["plate_capture_s"] = last_ ? last_->captureTimeSec : 0.0;
+    // The lights' age at the picture: both on the system clock (a live camera, vemd's stream).
+    if (last_ && last_->captureOnSystemClock && input.captureUnixSec) {
+      frame.lightAgeSec = last_->captureTimeSec - *input.captureUnixSec;
+      frame.timing["light_age_s"] = *frame.lightAgeSec;
+    }
+    if (!last_) {
+      frame.image = render::LinearImage::black(view_.plateWidthPx, view_.plateHeightPx);
+      frame.renderMs = msSince(start);
+      return frame;
+    }
+    render::DifferentialLayers rendered;
+    auto step = std::chrono::steady_clock::now();
+    RenderedFrame with = layers_.withObjects->render(view_.camera, lights, input);
+    rendered.withObjects = std::move(with.image);
+    frame.timing["with_objects_ms"] = msSince(step);
+    for (const auto& [key, value] : with.timing.items()) frame.timing["with_" + key] = value;
+    frame.strataShadowMaps = with.strataShadowMaps;
+    step = std::chrono::steady_clock::now();
+    rendered.classes = embree::surfaceClasses(*layers_.classesScene, layers_.objectMeshes,
+                                              view_.camera, view_.renderWidthPx,
+                                              view_.renderHeightPx, 0);
+    frame.timing["classes_ms"] = msSince(step);
+    const WithoutKey key{input.seq, input.cubeVersion, lights.diffuse.lights.size()};
+    const bool reused = differential_ && withoutKey_ == key;
+    if (differential_ && !reused) {
+      step = std::chrono::steady_clock::now();
+      without_ = layers_.withoutObjects->render(view_.camera, lights, input).image;
+      withoutKey_ = key;
+      frame.timing["without_objects_ms"] = msSince(step);
+    }
+    frame.timing["without_reused"] = reused;
+    if (differential_) rendered.withoutObjects = without_;
+    step = std::chrono::steady_clock::now();
+    const render::DifferentialLayers layers =
+        resampledLayers(rendered, last_->linear.widthPx, last_->linear.heightPx,
+                        view_.renderPxOfPlatePx);
+    frame.timing["resample_ms"] = msSince(step);
+    step = std::chrono::steady_clock::now();
+    render::PlateColour colour = view_.colour;
+    colour.saturation = last_->displayReferred ? 1.0F : 0.0F;  // 8-bit plates clip at white
+    render::CompositeStats stats;
+    if (differential_) {
+      if (!reused || last_->seq != albedoPlateSeq_) {
+        albedo_.update(last_->linear, layers.withoutObjects, colour);
+        albedoPlateSeq_ = last_->seq;
+      }
+      frame.image = render::compositeDifferential(last_->linear, layers, albedo_, colour, &stats);
+      frame.timing["albedo_frames"] = albedo_.frames();
+      frame.timing["albedo_clamped_px"] = albedo_.clampedLastUpdate();
+    } else {
+      frame.image = render::compositePasted(last_->linear, layers, colour);
+    }
+    frame.timing["composite_ms"] = msSince(step);
+    frame.timing["object_px"] = stats.objectPixels;
+    frame.timing["local_px"] = stats.localPixels;
+    if (stats.nonFinitePlatePixels > 0) {
+      frame.timing["plate_non_finite_px"] = stats.nonFinitePlatePixels;
+    }
+    frame.displayReferred = last_->displayReferred;
+    frame.renderMs = msSince(start);
+    return frame;
+  }
+
+ private:
+  bool differential_;
+  Layers layers_;
+  std::unique_ptr<PlateSource> plate_;
+  PlateView view_;
+  std::optional<PlateFrame> last_;
+  std::string state_ = "none";
+  double decodeMs_ = 0.0;
+  std::optional<WithoutKey> withoutKey_;
+  render::LinearImage without_;
+  render::AlbedoEstimate albedo_;
+  std::uint64_t albedoPlateSeq_ = 0;
+};
+
+std::expected<std::unique_ptr<FrameRenderer>, std::string> layerRenderer(
+    const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
+    const render::LightingGeometry& geometry, const std::shared_ptr<gl::GlContext>& context) {
+  if (options.renderer == RendererKind::Gl) {
+    return makeGlFrameRenderer(options, plan, scene, geometry, context);
+  }
+  return makeEmbreeFrameRenderer(options, plan, scene, geometry);
+}
+
+}  // namespace
+
+std::expected<std::unique_ptr<FrameRenderer>, std::string> makeCompositeFrameRenderer(
+    const ViewerOptions& options, const RenderPlan& plan,
+    const scene::LocalComposition& composition, const render::LightingGeometry& geometry,
+    std::unique_ptr<PlateSource> plate, PlateView view) {
+  Layers layers;
+  layers.options = std::make_unique<ViewerOptions>(options);
+  layers.options->widthPx = view.renderWidthPx;
+  layers.options->heightPx = view.renderHeightPx;
+  layers.options->headless = true;
+  std::shared_ptr<gl::GlContext> context;
+  if (options.renderer == RendererKind::Gl) {
+    auto made = gl::GlContext::headless(view.renderWidthPx, view.renderHeightPx);
+    if (!made) return std::unexpected(made.error());
+    context = std::move(*made);
+  }
+  auto with = layerRenderer(*layers.options, plan, composition.withObjects, geometry, context);
+  if (!with) return std::unexpected(with.error());
+  layers.withObjects = std::move(*with);
+  if (plan.composite && plan.composite->differential) {
+    auto without = layerRenderer(*layers.options, plan, composition.localOnly, geometry, context);
+    if (!without) return std::unexpected(without.error());
+    layers.withoutObjects = std::move(*without);
+  }
+  auto classes = embree::EmbreeScene::build(composition.withObjects);
+  if (!classes) return std::unexpected(classes.error());
+  layers.classesScene.emplace(std::move(*classes));
+  layers.objectMeshes = composition.objectMeshes;
+  return std::make_unique<CompositeFrameRenderer>(plan, std::move(layers), std::move(plate),
+                                                  std::move(view));
+}
+
+}  // namespace vem::view
