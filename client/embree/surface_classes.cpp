@@ -22,8 +22,7 @@ std::vector<render::SurfaceClass> surfaceClasses(const EmbreeScene& scene,
       }
       VEM_EXPECTS(hit->meshIndex < objectMeshes.size());
       classes[std::size_t(row) * std::size_t(widthPx) + std::size_t(x)] =
-          objectMeshes[hit->meshIndex] ? render::SurfaceClass::Object
-                                       : render::SurfaceClass::Local;
+          objectMeshes[hit->meshIndex] ? render::SurfaceClass::Object : render::SurfaceClass::Local;
     }
   });
   return classes;

@@ -150,7 +150,8 @@ std::expected<std::unique_ptr<GlRenderer>, std::string> GlRenderer::create(
       options.geometry == nullptr ? ownGeometry : *options.geometry;
 
   auto impl = std::unique_ptr<Impl>(new Impl{options,
-                                             scene::shadowCasterBounds(scene),
+                                             options.shadowCasterBounds.value_or(
+                                                 scene::shadowCasterBounds(scene)),
                                              scene.materials,
                                              {},
                                              std::move(*lighting),

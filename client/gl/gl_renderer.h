@@ -55,6 +55,10 @@ struct GlRendererOptions {
   // The region tables the ShadingLights were built on (borrowed during create() only);
   // nullptr: render::makeLightingGeometry(), the defaults buildShadingLights callers use.
   const render::LightingGeometry* geometry = nullptr;
+  // What the shadow maps look at; nothing: the scene's shadow casters (scene::shadowCasterBounds).
+  // A composite's layers fit them to the synthetic objects alone: the plate holds the real
+  // shadows, and the maps' texels go where the objects' shadows are.
+  std::optional<scene::Bounds> shadowCasterBounds;
 };
 
 // Shading by ratio: the unshadowed light from `lighting` (built for this renderer's scene's

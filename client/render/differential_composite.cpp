@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <glm/common.hpp>
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
 
 #include "util/contract.h"
 
@@ -65,6 +70,14 @@ void expectLayers(const LinearImage& plate, const DifferentialLayers& layers) {
   VEM_EXPECTS(layers.classes.size() == plate.pixelCount());
 }
 
+// f(first, last) over ranges of pixels on TBB's threads (each pixel is its own: the result does
+// not depend on the schedule).
+template <class F>
+void forPixelRanges(std::size_t pixelCount, const F& f) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pixelCount, 4096),
+                    [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+}
+
 }  // namespace
 
 AlbedoEstimate::AlbedoEstimate(int windowFrames) : windowFrames_(windowFrames) {
@@ -91,33 +104,37 @@ void AlbedoEstimate::update(const LinearImage& plate, const LinearImage& without
     albedo_.assign(plate.pixelCount(), glm::vec3(0.0F));
     seen_.assign(plate.pixelCount(), 0);
   }
-  clamped_ = 0;
-  for (std::size_t i = 0; i < plate.pixelCount(); ++i) {
-    if (withoutObjects.covered[i] == 0) {
-      continue;
-    }
-    const glm::vec3 white = rgbAt(withoutObjects, i);
-    bool nonFinite = false;
-    const glm::vec3 radiance = plateRadiance(plate, i, colour, &nonFinite);
-    if (nonFinite || !finite(white)) {
-      continue;
-    }
-    glm::vec3 estimate(0.0F);
-    bool clamped = saturated(plate, i, colour);
-    for (int c = 0; c < 3; ++c) {
-      if (!(white[c] > 0.0F)) {
-        continue;  // no light reaches it: nothing to divide by, nothing to composite either
+  tbb::combinable<std::size_t> clampedCount([] { return std::size_t{0}; });
+  forPixelRanges(plate.pixelCount(), [&](std::size_t first, std::size_t last) {
+    std::size_t& clampedHere = clampedCount.local();
+    for (std::size_t i = first; i < last; ++i) {
+      if (withoutObjects.covered[i] == 0) {
+        continue;
       }
-      const float raw = radiance[c] / white[c];
-      clamped = clamped || raw > 1.0F;
-      estimate[c] = std::clamp(raw, 0.0F, 1.0F);
+      const glm::vec3 white = rgbAt(withoutObjects, i);
+      bool nonFinite = false;
+      const glm::vec3 radiance = plateRadiance(plate, i, colour, &nonFinite);
+      if (nonFinite || !finite(white)) {
+        continue;
+      }
+      glm::vec3 estimate(0.0F);
+      bool clamped = saturated(plate, i, colour);
+      for (int c = 0; c < 3; ++c) {
+        if (!(white[c] > 0.0F)) {
+          continue;  // no light reaches it: nothing to divide by, nothing to composite either
+        }
+        const float raw = radiance[c] / white[c];
+        clamped = clamped || raw > 1.0F;
+        estimate[c] = std::clamp(raw, 0.0F, 1.0F);
+      }
+      clampedHere += clamped ? 1U : 0U;
+      const std::uint16_t n =
+          std::min<std::uint16_t>(std::uint16_t(seen_[i] + 1), std::uint16_t(windowFrames_));
+      seen_[i] = n;
+      albedo_[i] += (estimate - albedo_[i]) / float(n);
     }
-    clamped_ += clamped ? 1U : 0U;
-    const std::uint16_t n = std::min<std::uint16_t>(std::uint16_t(seen_[i] + 1),
-                                                    std::uint16_t(windowFrames_));
-    seen_[i] = n;
-    albedo_[i] += (estimate - albedo_[i]) / float(n);
-  }
+  });
+  clamped_ = clampedCount.combine(std::plus<>());
   ++frames_;
 }
 
@@ -132,25 +149,33 @@ LinearImage compositeDifferential(const LinearImage& plate, const DifferentialLa
   expectLayers(plate, layers);
   expectColour(colour);
   VEM_EXPECTS(albedo.widthPx() == plate.widthPx && albedo.heightPx() == plate.heightPx);
-  CompositeStats counted;
+  tbb::combinable<CompositeStats> countedParts;
   LinearImage out = LinearImage::black(plate.widthPx, plate.heightPx);
-  for (std::size_t i = 0; i < plate.pixelCount(); ++i) {
-    bool nonFinite = false;
-    const glm::vec3 radiance = plateRadiance(plate, i, colour, &nonFinite);
-    counted.nonFinitePlatePixels += nonFinite ? 1U : 0U;
-    glm::vec3 value = radiance;
-    if (layers.classes[i] == SurfaceClass::Object) {
-      value = rgbAt(layers.withObjects, i);
-      ++counted.objectPixels;
-    } else if (layers.classes[i] == SurfaceClass::Local) {
-      value = radiance + albedo.at(i) * (rgbAt(layers.withObjects, i) -
-                                         rgbAt(layers.withoutObjects, i));
-      ++counted.localPixels;
+  forPixelRanges(plate.pixelCount(), [&](std::size_t first, std::size_t last) {
+    CompositeStats& counted = countedParts.local();
+    for (std::size_t i = first; i < last; ++i) {
+      bool nonFinite = false;
+      const glm::vec3 radiance = plateRadiance(plate, i, colour, &nonFinite);
+      counted.nonFinitePlatePixels += nonFinite ? 1U : 0U;
+      glm::vec3 value = radiance;
+      if (layers.classes[i] == SurfaceClass::Object) {
+        value = rgbAt(layers.withObjects, i);
+        ++counted.objectPixels;
+      } else if (layers.classes[i] == SurfaceClass::Local) {
+        value = radiance +
+                albedo.at(i) * (rgbAt(layers.withObjects, i) - rgbAt(layers.withoutObjects, i));
+        ++counted.localPixels;
+      }
+      storeInPlateUnits(out, i, value, colour);
     }
-    storeInPlateUnits(out, i, value, colour);
-  }
+  });
   if (stats != nullptr) {
-    *stats = counted;
+    *stats = countedParts.combine([](CompositeStats a, const CompositeStats& b) {
+      a.objectPixels += b.objectPixels;
+      a.localPixels += b.localPixels;
+      a.nonFinitePlatePixels += b.nonFinitePlatePixels;
+      return a;
+    });
   }
   return out;
 }
@@ -161,13 +186,15 @@ LinearImage compositePasted(const LinearImage& plate, const DifferentialLayers& 
   VEM_EXPECTS(layers.classes.size() == plate.pixelCount());
   expectColour(colour);
   LinearImage out = LinearImage::black(plate.widthPx, plate.heightPx);
-  for (std::size_t i = 0; i < plate.pixelCount(); ++i) {
-    bool nonFinite = false;
-    const glm::vec3 value = layers.classes[i] == SurfaceClass::Object
-                                ? rgbAt(layers.withObjects, i)
-                                : plateRadiance(plate, i, colour, &nonFinite);
-    storeInPlateUnits(out, i, value, colour);
-  }
+  forPixelRanges(plate.pixelCount(), [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      bool nonFinite = false;
+      const glm::vec3 value = layers.classes[i] == SurfaceClass::Object
+                                  ? rgbAt(layers.withObjects, i)
+                                  : plateRadiance(plate, i, colour, &nonFinite);
+      storeInPlateUnits(out, i, value, colour);
+    }
+  });
   return out;
 }
 

@@ -3,23 +3,44 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "util/contract.h"
 
 namespace vem::render {
 namespace {
 
-glm::vec3 bilinear(const LinearImage& image, glm::vec2 renderPx) {
-  const float fx = std::clamp(renderPx.x - 0.5F, 0.0F, float(image.widthPx - 1));
-  const float fy = std::clamp(renderPx.y - 0.5F, 0.0F, float(image.heightPx - 1));
+// The four taps of a bilinear read at a render position: pixel offsets (times 3) and weights.
+struct Taps {
+  std::size_t offset[4];
+  float weight[4];
+};
+
+Taps tapsAt(int widthPx, int heightPx, glm::vec2 renderPx) {
+  const float fx = std::clamp(renderPx.x - 0.5F, 0.0F, float(widthPx - 1));
+  const float fy = std::clamp(renderPx.y - 0.5F, 0.0F, float(heightPx - 1));
   const int x0 = int(fx);
   const int y0 = int(fy);
-  const int x1 = std::min(x0 + 1, image.widthPx - 1);
-  const int y1 = std::min(y0 + 1, image.heightPx - 1);
+  const int x1 = std::min(x0 + 1, widthPx - 1);
+  const int y1 = std::min(y0 + 1, heightPx - 1);
   const float tx = fx - float(x0);
   const float ty = fy - float(y0);
-  const glm::vec3 top = image.at(x0, y0) * (1.0F - tx) + image.at(x1, y0) * tx;
-  const glm::vec3 bottom = image.at(x0, y1) * (1.0F - tx) + image.at(x1, y1) * tx;
-  return top * (1.0F - ty) + bottom * ty;
+  const auto at = [widthPx](int x, int y) {
+    return 3 * (std::size_t(y) * std::size_t(widthPx) + std::size_t(x));
+  };
+  return Taps{{at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1)},
+              {(1.0F - tx) * (1.0F - ty), tx * (1.0F - ty), (1.0F - tx) * ty, tx * ty}};
+}
+
+void readInto(const LinearImage& from, const Taps& taps, float* out) {
+  const float* rgb = from.rgb.data();
+  for (int c = 0; c < 3; ++c) {
+    out[c] = rgb[taps.offset[0] + std::size_t(c)] * taps.weight[0] +
+             rgb[taps.offset[1] + std::size_t(c)] * taps.weight[1] +
+             rgb[taps.offset[2] + std::size_t(c)] * taps.weight[2] +
+             rgb[taps.offset[3] + std::size_t(c)] * taps.weight[3];
+  }
 }
 
 std::size_t nearest(int widthPx, int heightPx, glm::vec2 renderPx) {
@@ -52,22 +73,28 @@ DifferentialLayers resampledLayers(const DifferentialLayers& rendered, int plate
   out.withObjects = LinearImage::black(plateWidthPx, plateHeightPx);
   if (withWithout) out.withoutObjects = LinearImage::black(plateWidthPx, plateHeightPx);
   out.classes.assign(out.withObjects.pixelCount(), SurfaceClass::Background);
-  for (int y = 0; y < plateHeightPx; ++y) {
-    for (int x = 0; x < plateWidthPx; ++x) {
-      const std::size_t i = std::size_t(y) * std::size_t(plateWidthPx) + std::size_t(x);
-      const glm::vec2 at = renderPxOfPlatePx.empty()
-                               ? scaledRenderPx(x, y, plateWidthPx, plateHeightPx, w, h)
-                               : renderPxOfPlatePx[i];
-      const std::size_t n = nearest(w, h, at);
-      out.classes[i] = rendered.classes[n];
-      out.withObjects.set(x, y, bilinear(rendered.withObjects, at),
-                          rendered.withObjects.covered[n] != 0);
-      if (withWithout) {
-        out.withoutObjects.set(x, y, bilinear(rendered.withoutObjects, at),
-                               rendered.withoutObjects.covered[n] != 0);
-      }
-    }
-  }
+  // Rows in parallel on TBB's threads; each pixel is written once, so the result does not depend
+  // on the schedule.
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, plateHeightPx), [&](const tbb::blocked_range<int>& rows) {
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+          for (int x = 0; x < plateWidthPx; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(plateWidthPx) + std::size_t(x);
+            const glm::vec2 at = renderPxOfPlatePx.empty()
+                                     ? scaledRenderPx(x, y, plateWidthPx, plateHeightPx, w, h)
+                                     : renderPxOfPlatePx[i];
+            const std::size_t n = nearest(w, h, at);
+            const Taps taps = tapsAt(w, h, at);
+            out.classes[i] = rendered.classes[n];
+            readInto(rendered.withObjects, taps, &out.withObjects.rgb[3 * i]);
+            out.withObjects.covered[i] = rendered.withObjects.covered[n];
+            if (withWithout) {
+              readInto(rendered.withoutObjects, taps, &out.withoutObjects.rgb[3 * i]);
+              out.withoutObjects.covered[i] = rendered.withoutObjects.covered[n];
+            }
+          }
+        }
+      });
   return out;
 }
 

@@ -92,8 +92,8 @@ MixedRealityWorld mixedRealityWorld() {
     mesh.material += offset;
     world.realWithObjects.meshes.push_back(std::move(mesh));
   }
-  world.plateViewFromWorld = glm::lookAt(glm::vec3(0.25F, 0.95F, 2.1F), glm::vec3(-0.05F, 0.28F, 0.0F),
-                                         glm::vec3(0.0F, 1.0F, 0.0F));
+  world.plateViewFromWorld = glm::lookAt(
+      glm::vec3(0.25F, 0.95F, 2.1F), glm::vec3(-0.05F, 0.28F, 0.0F), glm::vec3(0.0F, 1.0F, 0.0F));
   return world;
 }
 

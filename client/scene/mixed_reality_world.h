@@ -30,10 +30,10 @@ struct PlateIntrinsicsPx {
 };
 
 struct MixedRealityWorld {
-  Scene realSurfaces;      // what the plate shows
-  Scene proxies;           // the local scene as a user would model it: the box and the wall
-  Scene objects;           // the synthetic objects
-  Scene realWithObjects;   // the truth: realSurfaces and objects together
+  Scene realSurfaces;     // what the plate shows
+  Scene proxies;          // the local scene as a user would model it: the box and the wall
+  Scene objects;          // the synthetic objects
+  Scene realWithObjects;  // the truth: realSurfaces and objects together
   PlateIntrinsicsPx intrinsics;
   glm::mat4 plateViewFromWorld{1.0F};  // OpenGL's view frame
 };

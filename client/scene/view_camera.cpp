@@ -44,9 +44,9 @@ ViewCamera::Projection ViewCamera::project(const glm::vec3& pointWorld, int widt
   const float tanHalfFovX = tanHalfFovY * aspect * fyOverFx;
   const float ndcX = pointView.x / -pointView.z / tanHalfFovX + principalNdc.x;
   const float ndcY = pointView.y / -pointView.z / tanHalfFovY + principalNdc.y;
-  return Projection{glm::vec2((ndcX + 1.0F) * 0.5F * float(widthPx),
-                              (1.0F - ndcY) * 0.5F * float(heightPx)),
-                    false};
+  return Projection{
+      glm::vec2((ndcX + 1.0F) * 0.5F * float(widthPx), (1.0F - ndcY) * 0.5F * float(heightPx)),
+      false};
 }
 
 ViewCamera pinholeViewCamera(const glm::mat4& viewFromWorld, double fxPx, double fyPx, double cxPx,

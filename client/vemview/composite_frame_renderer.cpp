@@ -38,8 +38,8 @@ struct Layers {
 
 class CompositeFrameRenderer final : public FrameRenderer {
  public:
-  CompositeFrameRenderer(const RenderPlan& plan, Layers layers,
-                         std::unique_ptr<PlateSource> plate, PlateView view)
+  CompositeFrameRenderer(const RenderPlan& plan, Layers layers, std::unique_ptr<PlateSource> plate,
+                         PlateView view)
       : differential_(plan.composite && plan.composite->differential),
         layers_(std::move(layers)),
         plate_(std::move(plate)),
@@ -57,6 +57,7 @@ class CompositeFrameRenderer final : public FrameRenderer {
     if (picture && (!last_ || picture->seq != last_->seq)) {
       last_ = std::move(picture);
       state_ = "new";
+      pictureArrived_ = start;
     } else if (!picture) {
       state_ = plate_->ended() ? (plate_->live() ? "stopped: keeping the last picture"
                                                  : "ended: keeping the last picture")
@@ -96,9 +97,9 @@ class CompositeFrameRenderer final : public FrameRenderer {
     for (const auto& [key, value] : with.timing.items()) frame.timing["with_" + key] = value;
     frame.strataShadowMaps = with.strataShadowMaps;
     step = std::chrono::steady_clock::now();
-    rendered.classes = embree::surfaceClasses(*layers_.classesScene, layers_.objectMeshes,
-                                              view_.camera, view_.renderWidthPx,
-                                              view_.renderHeightPx, 0);
+    rendered.classes =
+        embree::surfaceClasses(*layers_.classesScene, layers_.objectMeshes, view_.camera,
+                               view_.renderWidthPx, view_.renderHeightPx, 0);
     frame.timing["classes_ms"] = msSince(step);
     const WithoutKey key{input.seq, input.cubeVersion, lights.diffuse.lights.size()};
     const bool reused = differential_ && withoutKey_ == key;
@@ -111,9 +112,8 @@ class CompositeFrameRenderer final : public FrameRenderer {
     frame.timing["without_reused"] = reused;
     if (differential_) rendered.withoutObjects = without_;
     step = std::chrono::steady_clock::now();
-    const render::DifferentialLayers layers =
-        resampledLayers(rendered, last_->linear.widthPx, last_->linear.heightPx,
-                        view_.renderPxOfPlatePx);
+    const render::DifferentialLayers layers = resampledLayers(
+        rendered, last_->linear.widthPx, last_->linear.heightPx, view_.renderPxOfPlatePx);
     frame.timing["resample_ms"] = msSince(step);
     step = std::chrono::steady_clock::now();
     render::PlateColour colour = view_.colour;
@@ -138,6 +138,8 @@ class CompositeFrameRenderer final : public FrameRenderer {
     }
     frame.displayReferred = last_->displayReferred;
     frame.renderMs = msSince(start);
+    // From the picture's decode to its composite: the latency vemview adds to the plate.
+    frame.timing["plate_to_composite_ms"] = msSince(pictureArrived_);
     return frame;
   }
 
@@ -149,6 +151,7 @@ class CompositeFrameRenderer final : public FrameRenderer {
   std::optional<PlateFrame> last_;
   std::string state_ = "none";
   double decodeMs_ = 0.0;
+  std::chrono::steady_clock::time_point pictureArrived_;
   std::optional<WithoutKey> withoutKey_;
   render::LinearImage without_;
   render::AlbedoEstimate albedo_;

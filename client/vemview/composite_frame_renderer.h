@@ -13,7 +13,8 @@
 // plate's units. With no differential pass (render_plan.h's CompositePlan) there is no render
 // without the objects: they are drawn over the plate. Its timing: plate_decode_ms,
 // with_objects_ms, without_objects_ms, without_reused, classes_ms, resample_ms, composite_ms,
-// plate_seq, plate_state, plate_capture_s, albedo_frames, albedo_clamped_px, object_px, local_px.
+// plate_seq, plate_state, plate_capture_s, albedo_frames, albedo_clamped_px, object_px, local_px,
+// plate_to_composite_ms (from the picture's decode to its composite), light_age_s.
 #pragma once
 
 #include <expected>

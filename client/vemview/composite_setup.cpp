@@ -27,8 +27,8 @@ scene::Scene transformed(scene::Scene s, const glm::mat4& transform) {
 
 scene::Scene placed(scene::Scene objects, const Placement& placement) {
   const glm::mat4 move =
-      glm::translate(glm::mat4(1.0F), glm::vec3(float(placement.xM), float(placement.yM),
-                                                float(placement.zM))) *
+      glm::translate(glm::mat4(1.0F),
+                     glm::vec3(float(placement.xM), float(placement.yM), float(placement.zM))) *
       glm::rotate(glm::mat4(1.0F), float(placement.yawDeg * std::numbers::pi / 180.0),
                   glm::vec3(0.0F, 1.0F, 0.0F));
   return transformed(std::move(objects), move);
@@ -57,8 +57,8 @@ std::expected<CompositeSetup, std::string> setUpComposite(const ViewerOptions& o
       for (const scene::Mesh& mesh : world.proxies.meshes) local.meshes.push_back(mesh);
       proxies = world.proxies.meshes.size();
     }
-    const int heightPx = renderHeightFor(world.intrinsics.widthPx, world.intrinsics.heightPx,
-                                         options.widthPx);
+    const int heightPx =
+        renderHeightFor(world.intrinsics.widthPx, world.intrinsics.heightPx, options.widthPx);
     auto plate = openSimulatedPlate(world, *firstInput.map, options.widthPx, heightPx);
     if (!plate) return std::unexpected(plate.error());
     setup.plate = std::move(*plate);
@@ -79,9 +79,10 @@ std::expected<CompositeSetup, std::string> setUpComposite(const ViewerOptions& o
   setup.plan = compositePlanFor(objects, proxies);
   setup.plan.plate = setup.plate->description();
   setup.plan.camera = setup.view.description;
+  const scene::Scene turned = transformed(objects, setup.view.probeWorldFromPlateWorld);
+  if (!turned.meshes.empty()) setup.plan.objectBounds = scene::sceneBounds(turned);
   setup.composition =
-      scene::composeWithLocal(transformed(objects, setup.view.probeWorldFromPlateWorld),
-                              transformed(local, setup.view.probeWorldFromPlateWorld));
+      scene::composeWithLocal(turned, transformed(local, setup.view.probeWorldFromPlateWorld));
   return setup;
 }
 

@@ -187,6 +187,7 @@ std::expected<std::unique_ptr<FrameRenderer>, std::string> makeGlFrameRenderer(
   glOptions.presentToWindow = !options.headless;
   glOptions.environmentCoverage = plan.cubeMapCoverage;
   glOptions.geometry = &geometry;
+  if (plan.composite) glOptions.shadowCasterBounds = plan.composite->objectBounds;
   context->makeCurrent();
   auto renderer = gl::GlRenderer::create(scene, glOptions);
   if (!renderer) {

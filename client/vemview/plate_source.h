@@ -38,7 +38,7 @@ struct PlateFrame {
   bool displayReferred = true;
   double captureTimeSec = 0.0;
   bool captureOnSystemClock = false;  // a live camera's: comparable with the lights' capture time
-  std::uint64_t seq = 0;  // changes exactly when the picture does
+  std::uint64_t seq = 0;              // changes exactly when the picture does
 };
 
 class PlateSource {

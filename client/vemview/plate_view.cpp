@@ -24,13 +24,13 @@ glm::mat4 viewFromWorldOf(const calib::PlatePose& pose) {
 }  // namespace
 
 int renderHeightFor(int plateWidthPx, int plateHeightPx, int renderWidthPx) {
-  return std::max(1, int(std::lround(double(renderWidthPx) * double(plateHeightPx) /
-                                     double(plateWidthPx))));
+  return std::max(
+      1, int(std::lround(double(renderWidthPx) * double(plateHeightPx) / double(plateWidthPx))));
 }
 
 std::expected<PlateView, std::string> plateViewOf(const calib::PlateCamera& camera,
-                                                 const std::string& file, int plateWidthPx,
-                                                 int plateHeightPx, int renderWidthPx) {
+                                                  const std::string& file, int plateWidthPx,
+                                                  int plateHeightPx, int renderWidthPx) {
   const calib::PlateIntrinsics& k = camera.intrinsics;
   if (k.widthPx != plateWidthPx || k.heightPx != plateHeightPx) {
     return std::unexpected(fmt::format(
@@ -48,13 +48,13 @@ std::expected<PlateView, std::string> plateViewOf(const calib::PlateCamera& came
   view.plateHeightPx = plateHeightPx;
   view.renderWidthPx = renderWidthPx;
   view.renderHeightPx = renderHeightFor(plateWidthPx, plateHeightPx, renderWidthPx);
-  const glm::mat4 turn = glm::rotate(glm::mat4(1.0F), float(-camera.probeYawRad),
-                                     glm::vec3(0.0F, 1.0F, 0.0F));
+  const glm::mat4 turn =
+      glm::rotate(glm::mat4(1.0F), float(-camera.probeYawRad), glm::vec3(0.0F, 1.0F, 0.0F));
   view.probeWorldFromPlateWorld = turn;
   // A point seen at p_plate is at turn * p_plate in the probe's world: the view undoes the turn.
-  view.camera = scene::pinholeViewCamera(viewFromWorldOf(*camera.pose) * glm::inverse(turn), k.fxPx,
-                                         k.fyPx, k.cxPx, k.cyPx, k.widthPx, k.heightPx, kNearM,
-                                         kFarM);
+  view.camera =
+      scene::pinholeViewCamera(viewFromWorldOf(*camera.pose) * glm::inverse(turn), k.fxPx, k.fyPx,
+                               k.cxPx, k.cyPx, k.widthPx, k.heightPx, kNearM, kFarM);
   const bool distorted = std::ranges::any_of(k.distortion, [](double d) { return d != 0.0; });
   if (distorted) {
     std::vector<glm::dvec2> plate;
@@ -71,9 +71,9 @@ std::expected<PlateView, std::string> plateViewOf(const calib::PlateCamera& came
     }
   }
   if (camera.colour) {
-    view.colour.gainRgb = glm::vec3(float(camera.colour->gainRgb[0]),
-                                    float(camera.colour->gainRgb[1]),
-                                    float(camera.colour->gainRgb[2]));
+    view.colour.gainRgb =
+        glm::vec3(float(camera.colour->gainRgb[0]), float(camera.colour->gainRgb[1]),
+                  float(camera.colour->gainRgb[2]));
   }
   view.description = fmt::format(
       "plate camera {} {} ({} x {} px, {}{}, probe yaw {:.2f} degrees{})", camera.camera.model,
@@ -91,10 +91,10 @@ PlateView simulatedPlateView(const scene::MixedRealityWorld& world, int renderWi
   view.plateHeightPx = renderHeightPx;
   view.renderWidthPx = renderWidthPx;
   view.renderHeightPx = renderHeightPx;
-  view.description = fmt::format("the simulated world's plate camera ({} x {} px at {} x {}, no "
-                                 "distortion, gain 1)",
-                                 world.intrinsics.widthPx, world.intrinsics.heightPx,
-                                 renderWidthPx, renderHeightPx);
+  view.description = fmt::format(
+      "the simulated world's plate camera ({} x {} px at {} x {}, no "
+      "distortion, gain 1)",
+      world.intrinsics.widthPx, world.intrinsics.heightPx, renderWidthPx, renderHeightPx);
   return view;
 }
 

@@ -26,24 +26,24 @@
 namespace vem::view {
 
 struct PlateView {
-  scene::ViewCamera camera;                     // in the light probe's world
-  glm::mat4 probeWorldFromPlateWorld{1.0F};     // for the objects and the local scene
+  scene::ViewCamera camera;                  // in the light probe's world
+  glm::mat4 probeWorldFromPlateWorld{1.0F};  // for the objects and the local scene
   int plateWidthPx = 0;
   int plateHeightPx = 0;
   int renderWidthPx = 0;
   int renderHeightPx = 0;
-  std::vector<glm::vec2> renderPxOfPlatePx;     // empty: no distortion (render/layer_resampling.h)
+  std::vector<glm::vec2> renderPxOfPlatePx;  // empty: no distortion (render/layer_resampling.h)
   render::PlateColour colour;
-  std::string description;                      // for the plan line
+  std::string description;  // for the plan line
 };
 
 // `file` names the plate-camera file in messages. Fails in one sentence when the camera has no
 // pose yet, or when the plate's size is not the size the file was calibrated at (another camera,
 // or another mode of it).
 [[nodiscard]] std::expected<PlateView, std::string> plateViewOf(const calib::PlateCamera& camera,
-                                                               const std::string& file,
-                                                               int plateWidthPx, int plateHeightPx,
-                                                               int renderWidthPx);
+                                                                const std::string& file,
+                                                                int plateWidthPx, int plateHeightPx,
+                                                                int renderWidthPx);
 
 [[nodiscard]] PlateView simulatedPlateView(const scene::MixedRealityWorld& world, int renderWidthPx,
                                            int renderHeightPx);

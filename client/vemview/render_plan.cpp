@@ -120,6 +120,11 @@ std::string RenderPlan::describe() const {
         composite->reason,
         composite->proxyMeshes > 0 ? fmt::format(" and {} proxy meshes", composite->proxyMeshes)
                                    : std::string());
+    if (composite->objectBounds && shadowMaps) {
+      text += fmt::format("; shadow maps over the objects ({:.2f} m across), not the local scene: "
+                          "the plate holds the real shadows",
+                          2.0F * composite->objectBounds->radius());
+    }
   }
   return text;
 }

@@ -59,6 +59,9 @@ struct CompositePlan {
   std::string plate;   // the plate source's description
   std::string camera;  // the plate camera's
   std::size_t proxyMeshes = 0;
+  // OpenGL's shadow maps look at the objects alone (in the light probe's world): the plate holds
+  // the real shadows, and the differential pass needs only the objects'.
+  std::optional<scene::Bounds> objectBounds;
 };
 
 // The differential pass runs when something synthetic can shadow the local scene: an object with

@@ -36,8 +36,8 @@ std::expected<std::unique_ptr<PlateSource>, std::string> openSimulatedPlate(
   embree::ReferenceOptions options;
   options.targetRelativeError = relativeError;
   options.threadCount = 0;
-  embree::ReferenceResult result = embree::renderReference(
-      *scene, scene::plateViewCamera(world), widthPx, heightPx, map, options);
+  embree::ReferenceResult result = embree::renderReference(*scene, scene::plateViewCamera(world),
+                                                           widthPx, heightPx, map, options);
   std::ranges::fill(result.image.covered, std::uint8_t{1});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

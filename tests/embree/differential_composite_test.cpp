@@ -18,8 +18,8 @@ namespace {
 
 using testing::built;
 using testing::lightsFrom;
-using testing::sharedHdri;
 using testing::shadingLightsFor;
+using testing::sharedHdri;
 
 constexpr int kW = 96;
 constexpr int kH = 72;
@@ -41,13 +41,13 @@ struct Setting {
   CubeMap cube = cubeMapFromEnvMap(sky, 64, 7);
 };
 
-TEST(DifferentialCompositeAgainstTruth, SunShadowOnTheRealFloorMatchesTheTruthWherePastingMissesIt) {
+TEST(DifferentialCompositeAgainstTruth,
+     SunShadowOnTheRealFloorMatchesTheTruthWherePastingMissesIt) {
   const Setting s;
   ReferenceOptions referenceOptions;
   referenceOptions.targetRelativeError = 0.03;
   const render::LinearImage plate =
-      renderReference(built(s.world.realSurfaces), s.camera, kW, kH, s.sky, referenceOptions)
-          .image;
+      renderReference(built(s.world.realSurfaces), s.camera, kW, kH, s.sky, referenceOptions).image;
   const render::LinearImage truth =
       renderReference(built(s.world.realWithObjects), s.camera, kW, kH, s.sky, referenceOptions)
           .image;

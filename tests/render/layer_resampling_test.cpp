@@ -28,8 +28,8 @@ TEST(LayerResampling, LargerPlateTakesEachPixelsNearestClassAndBlendsRadianceAcr
   EXPECT_EQ(out.classes[1], SurfaceClass::Object);
   EXPECT_EQ(out.classes[2], SurfaceClass::Local);
   EXPECT_EQ(out.classes[7], SurfaceClass::Local);
-  EXPECT_FLOAT_EQ(out.withObjects.at(0, 0).x, 4.0F);   // clamped at the edge
-  EXPECT_FLOAT_EQ(out.withObjects.at(1, 0).x, 3.5F);   // a quarter of the way to the right pixel
+  EXPECT_FLOAT_EQ(out.withObjects.at(0, 0).x, 4.0F);  // clamped at the edge
+  EXPECT_FLOAT_EQ(out.withObjects.at(1, 0).x, 3.5F);  // a quarter of the way to the right pixel
   EXPECT_FLOAT_EQ(out.withObjects.at(3, 1).x, 2.0F);
   EXPECT_FLOAT_EQ(out.withoutObjects.at(2, 1).x, 2.0F);
 }

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
+#include <gtest/gtest.h>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-#include <gtest/gtest.h>
 
 #include "client/scene/orbit_camera.h"
 
@@ -62,8 +62,8 @@ TEST(ViewCamera, OffCentrePinholeLandsPointsWhereOpenCvsCameraMatrixDoes) {
     EXPECT_NEAR(glm::length(ray.originWorld - eyeWorld), 0.0F, 1e-5F);
     EXPECT_GT(glm::dot(ray.dirWorld, glm::normalize(pointWorld - eyeWorld)), 1.0F - 1e-6F);
   }
-  EXPECT_TRUE(camera.project(eyeWorld - worldFromCv * glm::vec3(0, 0, 1), k.widthPx, k.heightPx)
-                  .behindEye);
+  EXPECT_TRUE(
+      camera.project(eyeWorld - worldFromCv * glm::vec3(0, 0, 1), k.widthPx, k.heightPx).behindEye);
 }
 
 TEST(ViewCamera, PinholeRenderedAtHalfSizeKeepsTheSameView) {

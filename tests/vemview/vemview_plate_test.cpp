@@ -63,8 +63,8 @@ const PlateFixture& plateFixture() {
     vem::embree::ReferenceOptions options;
     options.targetRelativeError = 0.05;
     vem::render::LinearImage image =
-        vem::embree::renderReference(*scene, vem::scene::plateViewCamera(world), kPlateW,
-                                     kPlateH, *map, options)
+        vem::embree::renderReference(*scene, vem::scene::plateViewCamera(world), kPlateW, kPlateH,
+                                     *map, options)
             .image;
     double meanY = 0.0;
     for (std::size_t i = 0; i < image.pixelCount(); ++i) meanY += double(image.rgb[3 * i + 1]);
@@ -153,8 +153,10 @@ TEST_F(VemviewPlate, PlateLargerThanTheRenderComesOutAtItsOwnSizeUntouchedWhereN
 }
 
 TEST_F(VemviewPlate, UnchangedLightsReuseTheRenderWithoutTheObjects) {
-  const CommandRun r = run(common() + "--plate " + plate() + " --width 80 --frames 3 --orbit 0 "
-                           "--out " + path("out"));
+  const CommandRun r = run(common() + "--plate " + plate() +
+                           " --width 80 --frames 3 --orbit 0 "
+                           "--out " +
+                           path("out"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto lines = jsonLines(fs::path(path("out")) / "timing.jsonl");
   ASSERT_EQ(lines.size(), 3U);
@@ -167,11 +169,10 @@ TEST_F(VemviewPlate, VideoPlateThatEndsStopsTheRunAfterItsLastFrameAndTheVideoHo
   ASSERT_FALSE(plateFixture().srgb.empty());
   const std::string video = path("plate.mp4");
   {
-    cv::VideoWriter writer(video, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('m', 'p', '4', 'v'),
-                           30.0, cv::Size(kPlateW, kPlateH));
+    cv::VideoWriter writer(video, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), 30.0,
+                           cv::Size(kPlateW, kPlateH));
     ASSERT_TRUE(writer.isOpened());
-    cv::Mat rgb(kPlateH, kPlateW, CV_8UC3,
-                const_cast<std::uint8_t*>(plateFixture().srgb.data()));
+    cv::Mat rgb(kPlateH, kPlateW, CV_8UC3, const_cast<std::uint8_t*>(plateFixture().srgb.data()));
     cv::Mat bgr;
     cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
     for (int i = 0; i < 3; ++i) writer.write(bgr);
@@ -211,8 +212,8 @@ TEST_F(VemviewPlate, MissingPlateCameraFileIsOneSentenceNamingIt) {
 
 TEST_F(VemviewPlate, LightProbeCameraFileGivenAsThePlateCameraIsRefusedInOneSentence) {
   const std::string probe = std::string(VEM_SOURCE_DIR) + "/config/camera-example.toml";
-  expectRefused(" --headless --plate " + plate() + " --plate-camera " + probe, "camera-example.toml",
-                1);
+  expectRefused(" --headless --plate " + plate() + " --plate-camera " + probe,
+                "camera-example.toml", 1);
 }
 
 TEST_F(VemviewPlate, PlateWithoutItsCameraOrWithAWindowIsAUsageError) {
@@ -227,9 +228,10 @@ TEST_F(VemviewPlate, PlateWithoutItsCameraOrWithAWindowIsAUsageError) {
 TEST_F(VemviewPlate, SimulatedPlateCompositeLooksAsItDidInBothRenderers) {
   for (const std::string renderer : {"embree", "gl"}) {
     const std::string out = path("out-" + renderer);
-    const CommandRun r = run(" --headless --plate sim --width 160 --count 256 --soft-shadows "
-                             "--shadowed 256 --renderer " + renderer + " --map " + skyMap() +
-                             " --no-exr --out " + out);
+    const CommandRun r =
+        run(" --headless --plate sim --width 160 --count 256 --soft-shadows "
+            "--shadowed 256 --renderer " +
+            renderer + " --map " + skyMap() + " --no-exr --out " + out);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto picture = vem::render::loadSrgb8(fs::path(out) / "frame-000000.png");
     ASSERT_TRUE(picture.has_value()) << picture.error();

@@ -8,21 +8,25 @@
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "bench/render/reference_cache.h"
 #include "bench/render/study_setup.h"
 #include "client/embree/light_renderer.h"
+#include "client/embree/surface_classes.h"
 #include "client/gl/gl_context.h"
 #include "client/gl/gl_renderer.h"
-#include "client/render/shadow_draws.h"
-#include "client/render/soft_shadows.h"
-#include "client/embree/surface_classes.h"
 #include "client/render/environment_lighting.h"
 #include "client/render/image_files.h"
 #include "client/render/image_metrics.h"
+#include "client/render/shadow_draws.h"
+#include "client/render/soft_shadows.h"
 #include "client/render/tone_mapping.h"
 #include "client/scene/local_scene.h"
 #include "client/scene/mixed_reality_world.h"
+#include "client/vemview/plate_source.h"
 
 namespace vem::bench {
 namespace {
@@ -52,8 +56,8 @@ render::LinearImage coveredEverywhere(render::LinearImage image) {
 }
 
 struct Errors {
-  double whole = 0.0;          // relative RMS
-  double wholeMeanAbs = 0.0;   // mean |dY| / mean Y: less ruled by a few bright pixels
+  double whole = 0.0;         // relative RMS
+  double wholeMeanAbs = 0.0;  // mean |dY| / mean Y: less ruled by a few bright pixels
   double shadow = 0.0;
 };
 
@@ -62,10 +66,10 @@ Errors errorsOf(const render::LinearImage& composite, const render::LinearImage&
   const std::vector<std::uint8_t> all(truth.pixelCount(), 1);
   const render::ImageError whole =
       render::compareImages(restricted(composite, all), restricted(truth, all));
-  return {whole.relativeRms, whole.meanAbsoluteRelative,
-          render::compareImages(restricted(composite, shadowRegion),
-                                restricted(truth, shadowRegion))
-              .relativeRms};
+  return {
+      whole.relativeRms, whole.meanAbsoluteRelative,
+      render::compareImages(restricted(composite, shadowRegion), restricted(truth, shadowRegion))
+          .relativeRms};
 }
 
 scene::Scene rotatedAboutY(scene::Scene s, float angleRad) {
@@ -86,8 +90,8 @@ scene::ViewCamera tilted(scene::ViewCamera camera, float angleRad) {
 
 // The same view of geometry turned by `angleRad` about +Y: the lights seem turned the other way.
 scene::ViewCamera followingYaw(scene::ViewCamera camera, float angleRad) {
-  camera.viewFromWorld = camera.viewFromWorld *
-                         glm::rotate(glm::mat4(1.0F), -angleRad, glm::vec3(0.0F, 1.0F, 0.0F));
+  camera.viewFromWorld =
+      camera.viewFromWorld * glm::rotate(glm::mat4(1.0F), -angleRad, glm::vec3(0.0F, 1.0F, 0.0F));
   camera.eyeWorld = glm::vec3(glm::rotate(glm::mat4(1.0F), angleRad, glm::vec3(0, 1, 0)) *
                               glm::vec4(camera.eyeWorld, 1.0F));
   return camera;
@@ -111,8 +115,8 @@ std::expected<LayerScenes, std::string> layerScenesOf(const scene::LocalComposit
 struct Composited {
   render::LinearImage differential;
   render::LinearImage pasted;
-  double withMs = 0.0;      // the render with the objects and the surface classes
-  double withoutMs = 0.0;   // the render without them (skipped while the lights are unchanged)
+  double withMs = 0.0;     // the render with the objects and the surface classes
+  double withoutMs = 0.0;  // the render without them (skipped while the lights are unchanged)
   double compositeMs = 0.0;
 };
 
@@ -124,16 +128,16 @@ Composited compositeOnce(const LayerScenes& scenes, const scene::ViewCamera& cam
   Composited out;
   render::DifferentialLayers layers;
   auto start = std::chrono::steady_clock::now();
-  layers.withObjects = embree::renderWithLights(scenes.withObjects, camera, size.widthPx,
-                                                size.heightPx, lights, geometry, &map.cube,
-                                                lightOptions);
+  layers.withObjects =
+      embree::renderWithLights(scenes.withObjects, camera, size.widthPx, size.heightPx, lights,
+                               geometry, &map.cube, lightOptions);
   layers.classes = embree::surfaceClasses(scenes.withObjects, scenes.objectMeshes, camera,
                                           size.widthPx, size.heightPx, lightOptions.threadCount);
   out.withMs = msSince(start);
   start = std::chrono::steady_clock::now();
-  layers.withoutObjects = embree::renderWithLights(scenes.localOnly, camera, size.widthPx,
-                                                   size.heightPx, lights, geometry, &map.cube,
-                                                   lightOptions);
+  layers.withoutObjects =
+      embree::renderWithLights(scenes.localOnly, camera, size.widthPx, size.heightPx, lights,
+                               geometry, &map.cube, lightOptions);
   out.withoutMs = msSince(start);
   start = std::chrono::steady_clock::now();
   render::AlbedoEstimate albedo;
@@ -154,21 +158,26 @@ struct GlLayers {
 };
 
 std::expected<GlLayers, std::string> glLayersOf(const scene::LocalComposition& c,
-                                               const StudyImageSize& size,
-                                               const render::LightingGeometry& geometry,
-                                               std::size_t maxShadowMaps, int shadowMapPx) {
+                                                const StudyImageSize& size,
+                                                const render::LightingGeometry& geometry,
+                                                std::size_t maxShadowMaps, int shadowMapPx) {
   GlLayers out;
   auto context = gl::GlContext::headless(size.widthPx, size.heightPx);
   if (!context) return std::unexpected(context.error());
   out.context = std::move(*context);
-  out.name = fmt::format("OpenGL {} on {}", out.context->versionString(),
-                         out.context->timingLabel());
+  out.name =
+      fmt::format("OpenGL {} on {}", out.context->versionString(), out.context->timingLabel());
   gl::GlRendererOptions options;
   options.widthPx = size.widthPx;
   options.heightPx = size.heightPx;
   options.maxShadowMaps = maxShadowMaps;
   options.shadowMapPx = shadowMapPx;
   options.geometry = &geometry;
+  scene::Scene objects;  // the maps look at the objects alone, as vemview's composite
+  for (std::size_t i = 0; i < c.withObjects.meshes.size(); ++i) {
+    if (c.objectMeshes[i]) objects.meshes.push_back(c.withObjects.meshes[i]);
+  }
+  options.shadowCasterBounds = scene::sceneBounds(objects);
   auto with = gl::GlRenderer::create(c.withObjects, options);
   if (!with) return std::unexpected(with.error());
   auto without = gl::GlRenderer::create(c.localOnly, options);
@@ -245,6 +254,57 @@ render::LinearImage differenceImage(const render::LinearImage& a, const render::
 
 std::string pct(double x) { return fmt::format("{:.1f} %", 100.0 * x); }
 
+double percentileOf(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::ranges::sort(values);
+  return values[std::min(values.size() - 1, std::size_t(p * double(values.size())))];
+}
+
+// vemview's plate decoding (an MPEG-4 video through OpenCV and FFmpeg, then sRGB to linear) per
+// picture, at three sizes: videos of `frames` pictures of the plate scaled up, written here.
+std::expected<std::string, std::string> plateDecodeRows(const render::LinearImage& plate,
+                                                        const std::filesystem::path& folder,
+                                                        int frames) {
+  std::filesystem::create_directories(folder);
+  render::LinearImage exposed = plate;  // the camera's exposure: the mean at 0.35 of its white
+  double meanY = 0.0;
+  for (std::size_t i = 0; i < plate.pixelCount(); ++i) meanY += double(luminanceOf(plate, i));
+  meanY /= double(std::max<std::size_t>(plate.pixelCount(), 1));
+  for (float& v : exposed.rgb) v = float(double(v) * 0.35 / std::max(meanY, 1e-12));
+  const std::vector<std::uint8_t> srgb = render::displaySrgb8(exposed);
+  const cv::Mat small(plate.heightPx, plate.widthPx, CV_8UC3,
+                      const_cast<std::uint8_t*>(srgb.data()));
+  std::string rows;
+  for (const auto& [w, h] : {std::pair{640, 480}, std::pair{1280, 720}, std::pair{1920, 1080}}) {
+    const std::string path = (folder / fmt::format("plate-{}x{}.mp4", w, h)).string();
+    {
+      cv::VideoWriter writer(path, cv::CAP_FFMPEG, cv::VideoWriter::fourcc('m', 'p', '4', 'v'),
+                             30.0, cv::Size(w, h));
+      if (!writer.isOpened()) return std::unexpected("cannot write " + path);
+      cv::Mat big;
+      cv::resize(small, big, cv::Size(w, h), 0, 0, cv::INTER_LINEAR);
+      for (int i = 0; i < frames; ++i) {
+        cv::Mat frame = big.clone();
+        cv::randn(frame, cv::Scalar::all(0), cv::Scalar::all(4));  // sensor noise: real bits
+        cv::add(frame, big, frame);
+        writer.write(frame);
+      }
+    }
+    auto source = view::openPlateSource(path);
+    if (!source) return std::unexpected(source.error());
+    std::vector<double> ms;
+    for (;;) {
+      const auto start = std::chrono::steady_clock::now();
+      const std::optional<view::PlateFrame> picture = (*source)->next();
+      if (!picture) break;
+      ms.push_back(msSince(start));
+    }
+    rows += fmt::format("| {} x {} | {} | {:.1f} | {:.1f} |\n", w, h, ms.size(), medianOf(ms),
+                        percentileOf(ms, 0.99));
+  }
+  return rows;
+}
+
 }  // namespace
 
 std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOptions& options) {
@@ -271,9 +331,8 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
   auto floorRenderer = layerScenesOf(floorOnlyComposition);
   if (!floorRenderer) return std::unexpected(floorRenderer.error());
   const float yawErrorRad = 2.0F * 3.14159265F / 180.0F;
-  const scene::LocalComposition yawed =
-      scene::composeWithLocal(rotatedAboutY(world.objects, yawErrorRad),
-                              rotatedAboutY(local, yawErrorRad));
+  const scene::LocalComposition yawed = scene::composeWithLocal(
+      rotatedAboutY(world.objects, yawErrorRad), rotatedAboutY(local, yawErrorRad));
   auto yawRenderer = layerScenesOf(yawed);
   if (!yawRenderer) return std::unexpected(yawRenderer.error());
   std::optional<GlLayers> glLayers;
@@ -286,6 +345,7 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
   auto withScene = studySceneSeenBy(composition.withObjects, camera);
   if (!withScene) return std::unexpected(withScene.error());
 
+  render::LinearImage lastPlate;
   std::string errorRows;
   std::string timeRows;
   std::string registrationRows;
@@ -303,6 +363,7 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
                                     options.size.heightPx, referenceOptions, options.cacheDir);
     if (!truthRef) return std::unexpected(truthRef.error());
     const render::LinearImage plate = coveredEverywhere(plateRef->image);
+    lastPlate = plate;
     const render::LinearImage truth = coveredEverywhere(truthRef->image);
     referenceRows += fmt::format("| {} | {} / {} | {} / {} | {:.0f} s / {:.0f} s |\n", name,
                                  plateRef->samplesPerPixel, truthRef->samplesPerPixel,
@@ -385,24 +446,21 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
       }
       const Errors differential = errorsOf(result.differential, truth, shadowRegion);
       const Errors pasted = errorsOf(result.pasted, truth, shadowRegion);
-      const Composited floorOnlyResult =
-          compositeOnce(*floorRenderer, camera, options.size, lights, geometry, *map,
-                        lightOptions, plate);
+      const Composited floorOnlyResult = compositeOnce(*floorRenderer, camera, options.size, lights,
+                                                       geometry, *map, lightOptions, plate);
       const Errors floorOnlyErrors = errorsOf(floorOnlyResult.differential, truth, shadowRegion);
-      errorRows += fmt::format("| {} | {} | {} | {} {}| {} | {} | {} | {} |\n", name, n,
-                               pct(differential.whole), pct(differential.shadow), glErrors,
-                               pct(pasted.whole), pct(pasted.shadow),
-                               fmt::format("{:.1f}x", pasted.shadow / differential.shadow),
-                               pct(floorOnlyErrors.shadow));
+      errorRows += fmt::format(
+          "| {} | {} | {} | {} {}| {} | {} | {} | {} |\n", name, n, pct(differential.whole),
+          pct(differential.shadow), glErrors, pct(pasted.whole), pct(pasted.shadow),
+          fmt::format("{:.1f}x", pasted.shadow / differential.shadow), pct(floorOnlyErrors.shadow));
       timeRows += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f} {}|\n", name, n,
                               medianOf(plainMs), medianOf(fullMs), medianOf(reuseMs),
                               result.compositeMs, glTimes);
       if (n == kDumpCount) {
         for (const float degrees : {0.5F, 1.0F}) {
-          const Composited off = compositeOnce(*renderer, tilted(camera, degrees * 3.14159265F /
-                                                                             180.0F),
-                                               options.size, lights, geometry, *map,
-                                               lightOptions, plate);
+          const Composited off =
+              compositeOnce(*renderer, tilted(camera, degrees * 3.14159265F / 180.0F), options.size,
+                            lights, geometry, *map, lightOptions, plate);
           const Errors e = errorsOf(off.differential, truth, shadowRegion);
           registrationRows +=
               fmt::format("| {} | plate camera tilted by {} degree | {} | {} | {} |\n", name,
@@ -414,16 +472,16 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
         const Errors e = errorsOf(yawOff.differential, truth, shadowRegion);
         registrationRows += fmt::format("| {} | probe yaw off by 2 degrees | {} | {} | {} |\n",
                                         name, pct(e.whole), pct(e.wholeMeanAbs), pct(e.shadow));
-        registrationRows +=
-            fmt::format("| {} | none (calibrated) | {} | {} | {} |\n", name,
-                        pct(differential.whole), pct(differential.wholeMeanAbs),
-                        pct(differential.shadow));
+        registrationRows += fmt::format("| {} | none (calibrated) | {} | {} | {} |\n", name,
+                                        pct(differential.whole), pct(differential.wholeMeanAbs),
+                                        pct(differential.shadow));
         if (!options.dumpDir.empty()) {
           std::filesystem::create_directories(options.dumpDir);
           render::ToneSmoother smoother;
           const render::ToneParams params = smoother.update(render::measureLuminance(truth), 0.0);
           double meanY = 0.0;
-          for (std::size_t i = 0; i < truth.pixelCount(); ++i) meanY += double(luminanceOf(truth, i));
+          for (std::size_t i = 0; i < truth.pixelCount(); ++i)
+            meanY += double(luminanceOf(truth, i));
           meanY /= double(truth.pixelCount());
           const render::LinearImage diff =
               differenceImage(result.differential, truth, float(meanY));
@@ -432,8 +490,7 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
           dumpRow(fmt::format("{}/composite-{}.png", options.dumpDir, name),
                   {&plate, &result.differential, &truth, &diff, &pastedDiff}, params);
           if (glComposite) {
-            const render::LinearImage glDiff =
-                differenceImage(*glComposite, truth, float(meanY));
+            const render::LinearImage glDiff = differenceImage(*glComposite, truth, float(meanY));
             dumpRow(fmt::format("{}/composite-{}-gl.png", options.dumpDir, name),
                     {&*glComposite, &truth, &glDiff}, params);
           }
@@ -443,6 +500,13 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
     errorRows += fmt::format("| {} | shadow region | {} pixels of {} | | | | | | | |\n", name,
                              shadowPixels, plate.pixelCount());
   }
+  std::string decodeRows;
+  if (!options.cacheDir.empty()) {
+    auto decoded =
+        plateDecodeRows(lastPlate, std::filesystem::path(options.cacheDir) / "plates", 60);
+    if (!decoded) return std::unexpected(decoded.error());
+    decodeRows = *decoded;
+  }
   std::string out = fmt::format(
       "Scene: `{}` filmed by its plate camera at {} x {} px; the synthetic objects: {}. Local "
       "scene: the floor plane and the proxies (box, wall). Lights: the map's first N Havran "
@@ -451,29 +515,39 @@ std::expected<std::string, std::string> runCompositeStudy(const CompositeStudyOp
       "primary rays). References: embree::renderReference to {} relative error.\n\n",
       world.realSurfaces.name, options.size.widthPx, options.size.heightPx, world.objects.name,
       glLayers ? glLayers->name : std::string("OpenGL (not run)"), options.glShadowMaps,
-      options.glShadowMapPx,
-      pct(options.referenceError));
+      options.glShadowMapPx, pct(options.referenceError));
   out += "### Error against the truth (relative RMS)\n\n";
-  out += "| map | N | Embree, whole | Embree, shadow region | OpenGL, whole | OpenGL, shadow "
-         "region | pasted, whole | pasted, shadow region | pasted / Embree in the shadows | "
-         "Embree with the floor plane only, shadow region |\n"
-         "|---|---|---|---|---|---|---|---|---|---|\n" +
-         errorRows;
+  out +=
+      "| map | N | Embree, whole | Embree, shadow region | OpenGL, whole | OpenGL, shadow "
+      "region | pasted, whole | pasted, shadow region | pasted / Embree in the shadows | "
+      "Embree with the floor plane only, shadow region |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n" +
+      errorRows;
   out += "\n### Time per frame (ms, median)\n\n";
-  out += "| map | N | Embree: plain render (objects and local scene) | Embree: composite, lights "
-         "changed | Embree: composite, lights unchanged (\"without\" reused) | of which the "
-         "composite itself | OpenGL: composite, lights changed | OpenGL: lights unchanged "
-         "|\n|---|---|---|---|---|---|---|---|\n" +
-         timeRows;
-  out += "\n### What a registration error costs (N = 256)\n\n| map | error | whole, relative RMS "
-         "| whole, mean absolute | shadow region, relative RMS |\n|---|---|---|---|---|\n" +
-         registrationRows;
-  out += "\n### The references\n\n| map | samples per pixel, plate / truth | relative error | "
-         "render time |\n|---|---|---|---|\n" +
-         referenceRows;
-  out += fmt::format("\nStudy time: {:.0f} s.\n",
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - started)
-                         .count());
+  out +=
+      "| map | N | Embree: plain render (objects and local scene) | Embree: composite, lights "
+      "changed | Embree: composite, lights unchanged (\"without\" reused) | of which the "
+      "composite itself | OpenGL: composite, lights changed | OpenGL: lights unchanged "
+      "|\n|---|---|---|---|---|---|---|---|\n" +
+      timeRows;
+  out +=
+      "\n### What a registration error costs (N = 256)\n\n| map | error | whole, relative RMS "
+      "| whole, mean absolute | shadow region, relative RMS |\n|---|---|---|---|---|\n" +
+      registrationRows;
+  if (!decodeRows.empty()) {
+    out +=
+        "\n### Plate decoding (vemview's video plate: OpenCV's VideoCapture through FFmpeg, "
+        "MPEG-4 part 2, then sRGB to linear), ms per picture\n\n| size | pictures | median | "
+        "p99 |\n|---|---|---|---|\n" +
+        decodeRows;
+  }
+  out +=
+      "\n### The references\n\n| map | samples per pixel, plate / truth | relative error | "
+      "render time |\n|---|---|---|---|\n" +
+      referenceRows;
+  out += fmt::format(
+      "\nStudy time: {:.0f} s.\n",
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
   return out;
 }
 

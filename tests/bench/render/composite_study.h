@@ -32,10 +32,7 @@ struct CompositeStudyOptions {
   int frames = 3;       // timed frames per point (median)
   bool gl = true;       // also the OpenGL layers (headless), S = glShadowMaps with soft shadows
   std::size_t glShadowMaps = 256;
-  // The maps cover the casters' bounds, which hold the wall proxy (6 m): at vemview's 256 px the
-  // spheres' sun shadows come out blurred (17.6 % off in the shadow region under sky at N = 256,
-  // 6.9 % at 1024 px).
-  int glShadowMapPx = 1024;
+  int glShadowMapPx = 256;  // vemview's default; the maps look at the objects alone
 };
 
 // The report (markdown), or the first failure in one sentence.

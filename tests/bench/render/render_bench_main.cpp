@@ -102,7 +102,7 @@ int parse(int argc, char** argv, BenchOptions& o) {
                "the material study of issue 20 (a sphere on a plane, one material at a time, "
                "shading by the lights and by ratio) instead of the sweeps; writes --table");
   app.add_option("--shadow-map-px", o.shadowMapPx,
-                 "with --composite: OpenGL's shadow-map size (default 1024)")
+                 "with --composite: OpenGL's shadow-map size (default 256)")
       ->check(CLI::Range(64, 4096));
   app.add_flag("--composite", o.composite,
                "the mixed-reality study: objects composited into a simulated plate, against the "
