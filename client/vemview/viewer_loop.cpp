@@ -111,7 +111,10 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   const auto frameStart = Clock::now();
   // Headless from a live stream, each frame is a new light frame (waiting up to --timeout); a
   // window polls, so that it stays responsive between light frames.
-  const bool waitForNew = !v.lastDrawn || (v.options.headless && v.input->facts().live);
+  // With --plate the plate's pictures pace the run: a stream that stops sending lights leaves the
+  // last ones in use (their age in the status line), it does not end the run.
+  const bool waitForNew = !v.lastDrawn || (v.options.headless && v.input->facts().live &&
+                                           v.options.plate.empty());
   const auto wait = waitForNew ? std::chrono::milliseconds(int(v.options.streamTimeoutSec * 1000))
                                : std::chrono::milliseconds(5);
   std::optional<InputFrame> frame = v.input->next(wait);

@@ -204,6 +204,10 @@ TEST(ReadmeCommands, RunningTheRenderClientRunsAsWritten) {
   runSection("Running the render client", "render");
 }
 
+TEST(ReadmeCommands, PuttingObjectsIntoACamerasViewRunsAsWritten) {
+  runSection("Putting objects into a camera's view", "composite");
+}
+
 TEST(ReadmeCommands, InstallingIsLeftToTheInstallAndPackageTests) {
   runSection("Installing", "installing");
 }
@@ -214,8 +218,12 @@ TEST(ReadmeCommands, TheCalibrationWalkThroughRunsAsWritten) {
 
 // Every shell command sits under a section a test above runs; every rule still matches the README.
 TEST(ReadmeCommands, EveryShellCommandIsRunOrSkippedForAStatedReason) {
-  const std::vector<std::string> sections{"", "Installing", "Running the daemon",
-                                          "Running the render client", "Calibrating a camera"};
+  const std::vector<std::string> sections{"",
+                                          "Installing",
+                                          "Running the daemon",
+                                          "Running the render client",
+                                          "Putting objects into a camera's view",
+                                          "Calibrating a camera"};
   const std::vector<ShellCommand> commands = shellCommands(readme());
   for (const ShellCommand& c : commands) {
     EXPECT_NE(std::find(sections.begin(), sections.end(), c.heading), sections.end())

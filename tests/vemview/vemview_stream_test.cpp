@@ -9,6 +9,11 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "calib/core/plate_camera.h"
+#include "calib/io/plate_camera_file.h"
 
 #include "stream_e2e/small_camera.h"
 #include "stream_e2e/vemd_process.h"
@@ -97,6 +102,63 @@ TEST_F(VemviewStream, UnreachableDaemonIsOneSentenceAfterTheTimeout) {
                  dir_);
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.err.find("no lights arrived within 1 s"), std::string::npos) << r.err;
+}
+
+// The issue's hard case "light frames that stop arriving": a composite paced by its plate keeps
+// the last lights. vemd sends 4 light frames (2 a second) and stops; the plate has 30 pictures.
+// Headless from a stream, each frame used to wait for new lights, and the run ended with "no new
+// lights arrived" after the fourth; with --plate the plate's pictures pace it.
+TEST(VemviewStreamPlate, LightsThatStopArrivingLeaveTheCompositeOnTheLastLights) {
+  const fs::path dir = fs::temp_directory_path() /
+                       ("vemview_stream_plate_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "camera.toml") << vem::e2e::smallCameraToml();
+  std::ofstream(dir / "vemd.toml")
+      << "version = 1\n[source]\ncamera = \"" << (dir / "camera.toml").string()
+      << "\"\n[processing]\nmap_width = 256\nmap_height = 64\nlights = 64\n";
+  auto vemd = vem::e2e::VemdProcess::spawn(
+      VEMD_PATH, {"--config", (dir / "vemd.toml").string(), "--source", "synthetic:sky",
+                  "--rate", "2", "--frames", "4", "--stats-every", "0", "--stream-listen",
+                  "127.0.0.1:0"});
+  ASSERT_TRUE(vemd.has_value()) << vemd.error();
+  const auto port = (*vemd)->waitForPort(20s);
+  ASSERT_TRUE(port.has_value()) << (*vemd)->stderrText();
+  // A plate of 30 grey pictures, 64 x 48, and a camera looking at the origin from 2 m.
+  {
+    cv::VideoWriter writer((dir / "plate.mp4").string(), cv::CAP_FFMPEG,
+                           cv::VideoWriter::fourcc('m', 'p', '4', 'v'), 30.0, cv::Size(64, 48));
+    ASSERT_TRUE(writer.isOpened());
+    for (int i = 0; i < 30; ++i) writer.write(cv::Mat(48, 64, CV_8UC3, cv::Scalar(90, 100, 110)));
+  }
+  vem::calib::PlateCamera camera;
+  camera.camera.sensorWidthPx = 64;
+  camera.camera.sensorHeightPx = 48;
+  camera.camera.pixelFormat = vem::PixelFormat{3, 8};
+  camera.intrinsics = {64, 48, 60.0, 60.0, 31.5, 23.5, vem::calib::PlateLensModel::BrownConrady, {}};
+  camera.pose = vem::calib::plateLookingAt({0.0, 1.0, 2.0}, {0.0, 0.2, 0.0});
+  ASSERT_TRUE(vem::calib::io::savePlateCameraFile(camera, dir / "plate.toml").has_value());
+  const CommandRun r = runCommand(
+      vem::testing::commandLine(
+          VEMVIEW_PATH, "--connect ws://127.0.0.1:" + std::to_string(*port) +
+                            " --timeout 5 --headless --renderer embree --count 16 --width 64 "
+                            "--plate " + (dir / "plate.mp4").string() + " --plate-camera " +
+                            (dir / "plate.toml").string() + " --frames 40 --no-exr --out " +
+                            (dir / "out").string()),
+      dir);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err.find("no new lights"), std::string::npos) << r.err;
+  std::ifstream timing(dir / "out" / "timing.jsonl");
+  int drawn = 0;
+  std::set<std::uint64_t> seqs;
+  for (std::string line; std::getline(timing, line);) {
+    const auto json = nlohmann::json::parse(line);
+    drawn += json["drawn"].get<bool>() ? 1 : 0;
+    seqs.insert(json["input_seq"].get<std::uint64_t>());
+  }
+  EXPECT_EQ(drawn, 30) << r.err;  // every picture, composited with the lights it had
+  EXPECT_LE(seqs.size(), 4U) << "vemd sent 4 light frames";
+  vemd->reset();
+  fs::remove_all(dir);
 }
 
 }  // namespace
