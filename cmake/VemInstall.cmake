@@ -5,7 +5,7 @@
 # no tests, benchmarks, static libraries or headers.
 #
 #   <prefix>/bin/                         vemd, vemtool, vemview, vemcalib
-#   <sysconf>/vemcast/                    vemd.toml, camera-example.toml (config/)
+#   <sysconf>/vemcast/                    vemd.toml, camera-example.toml, plate-camera-example.toml (config/)
 #   <unitdir>/vemd.service                the systemd unit, its ExecStart naming the installed vemd
 #   <prefix>/share/doc/vemcast/           README.md, docs/*.md and their images
 #

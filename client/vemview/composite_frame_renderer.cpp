@@ -4,11 +4,16 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include "client/embree/embree_scene.h"
 #include "client/embree/surface_classes.h"
+#include "client/gl/overlay_pass.h"
+#include "client/gl/picture_pass.h"
+#include "client/render/image_files.h"
 #include "client/render/layer_resampling.h"
 #include "client/vemview/embree_frame_renderer.h"
+#include "client/vemview/frame_writer.h"
 #include "client/vemview/gl_frame_renderer.h"
 
 namespace vem::view {
@@ -34,16 +39,82 @@ struct Layers {
   std::unique_ptr<FrameRenderer> withoutObjects;  // null with no differential pass
   std::optional<embree::EmbreeScene> classesScene;
   std::vector<bool> objectMeshes;
+  std::shared_ptr<gl::GlContext> context;  // the window's, or OpenGL layers' headless one
 };
+
+// The window of a composite: the picture and the overlay drawn by OpenGL into its back buffer.
+struct CompositeWindow {
+  gl::PicturePass picture;
+  gl::OverlayPass overlay;
+};
+
+std::expected<std::unique_ptr<FrameRenderer>, std::string> layerRenderer(
+    const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
+    const render::LightingGeometry& geometry, const std::shared_ptr<gl::GlContext>& context) {
+  if (options.renderer == RendererKind::Gl) {
+    return makeGlFrameRenderer(options, plan, scene, geometry, context);
+  }
+  return makeEmbreeFrameRenderer(options, plan, scene, geometry);
+}
+
+// The layer with the objects and the classes' scene, for `composition` (built again when the
+// objects are dragged).
+std::expected<void, std::string> buildWithObjects(Layers& layers, const RenderPlan& plan,
+                                                  const scene::LocalComposition& composition,
+                                                  const render::LightingGeometry& geometry) {
+  auto with =
+      layerRenderer(*layers.options, plan, composition.withObjects, geometry, layers.context);
+  if (!with) return std::unexpected(with.error());
+  auto classes = embree::EmbreeScene::build(composition.withObjects);
+  if (!classes) return std::unexpected(classes.error());
+  layers.withObjects = std::move(*with);
+  layers.classesScene.emplace(std::move(*classes));
+  layers.objectMeshes = composition.objectMeshes;
+  return {};
+}
 
 class CompositeFrameRenderer final : public FrameRenderer {
  public:
   CompositeFrameRenderer(const RenderPlan& plan, Layers layers, std::unique_ptr<PlateSource> plate,
-                         PlateView view)
+                         PlateView view, scene::LocalComposition composition,
+                         const render::LightingGeometry& geometry,
+                         std::optional<CompositeWindow> window, std::string screenshot)
       : differential_(plan.composite && plan.composite->differential),
+        plan_(plan),
         layers_(std::move(layers)),
         plate_(std::move(plate)),
-        view_(std::move(view)) {}
+        view_(std::move(view)),
+        composition_(std::move(composition)),
+        geometry_(geometry),
+        window_(std::move(window)),
+        screenshot_(std::move(screenshot)) {}
+
+  ~CompositeFrameRenderer() override {
+    if (!screenshot_.empty() && !shown_.empty()) {
+      (void)render::saveSrgbPng(shown_, shownSizePx_.x, shownSizePx_.y, screenshot_);
+    }
+    if (layers_.context) layers_.context->makeCurrent();  // the GL objects go with their context
+  }
+  CompositeFrameRenderer(const CompositeFrameRenderer&) = delete;
+  CompositeFrameRenderer& operator=(const CompositeFrameRenderer&) = delete;
+
+  // The composite on the screen, the overlay over it; --screenshot keeps what is shown, before the
+  // overlay, at the plate's size.
+  void present(const render::ToneParams& tone, const std::string& overlay) override {
+    if (!window_ || shownImage_.widthPx == 0) return;
+    gl::GlContext& context = *layers_.context;
+    context.makeCurrent();
+    shown_ = frameSrgb8(shownImage_, shownDisplayReferred_, tone);
+    shownSizePx_ = {shownImage_.widthPx, shownImage_.heightPx};
+    const glm::ivec2 targetPx = context.framebufferSizePx();
+    window_->picture.draw(0, targetPx, shown_, shownSizePx_.x, shownSizePx_.y);
+    window_->overlay.draw(0, targetPx, overlay);
+    context.setTitle(overlay.substr(0, overlay.find('\n')));
+    context.swapBuffers();
+    context.pollEvents();
+  }
+
+  bool open() override { return !window_ || !layers_.context->shouldClose(); }
 
   std::string name() const override {
     return fmt::format("composite (differential rendering into the plate) by {}",
@@ -51,6 +122,9 @@ class CompositeFrameRenderer final : public FrameRenderer {
   }
 
   std::uint64_t pollOwnInput() override {
+    if (window_) {
+      if (auto moved = dragObjects(); !moved) spdlog::warn("{}", moved.error());
+    }
     const auto start = std::chrono::steady_clock::now();
     std::optional<PlateFrame> picture = plate_->next();
     decodeMs_ = msSince(start);
@@ -65,7 +139,8 @@ class CompositeFrameRenderer final : public FrameRenderer {
     } else {
       state_ = "still";
     }
-    return last_ ? last_->seq : 0;
+    // A new picture or objects moved: redraw.
+    return ((last_ ? last_->seq : 0) << 20U) ^ moves_;
   }
 
   bool ownInputEnded() const override { return plate_->ended() && !plate_->live(); }
@@ -137,6 +212,10 @@ class CompositeFrameRenderer final : public FrameRenderer {
       frame.timing["plate_non_finite_px"] = stats.nonFinitePlatePixels;
     }
     frame.displayReferred = last_->displayReferred;
+    if (window_) {
+      shownImage_ = frame.image;
+      shownDisplayReferred_ = frame.displayReferred;
+    }
     frame.renderMs = msSince(start);
     // From the picture's decode to its composite: the latency vemview adds to the plate.
     frame.timing["plate_to_composite_ms"] = msSince(pictureArrived_);
@@ -144,7 +223,35 @@ class CompositeFrameRenderer final : public FrameRenderer {
   }
 
  private:
+  // A left-button drag in the window slides the objects on the floor: their floor point follows
+  // the cursor (through the plate camera, onto y = 0). The layer with the objects is built again;
+  // the one without them stays.
+  std::expected<void, std::string> dragObjects() {
+    const glm::dvec2 dragPx = layers_.context->takeLeftDragPx();
+    if (dragPx == glm::dvec2(0.0) || !plan_.composite || !plan_.composite->objectBounds) {
+      return {};
+    }
+    const glm::ivec2 targetPx = layers_.context->framebufferSizePx();
+    const double shownScale = std::min(double(targetPx.x) / double(view_.plateWidthPx),
+                                       double(targetPx.y) / double(view_.plateHeightPx));
+    scene::Bounds& bounds = *plan_.composite->objectBounds;
+    const std::optional<glm::vec3> found =
+        floorMoveOfDrag(view_, bounds.centre(), glm::vec2(dragPx / shownScale));
+    if (!found) return {};
+    const glm::vec3 move = *found;
+    for (std::size_t i = 0; i < composition_.withObjects.meshes.size(); ++i) {
+      if (!composition_.objectMeshes[i]) continue;
+      for (glm::vec3& p : composition_.withObjects.meshes[i].positions) p += move;
+    }
+    bounds.min += move;
+    bounds.max += move;
+    ++moves_;
+    if (layers_.context) layers_.context->makeCurrent();
+    return buildWithObjects(layers_, plan_, composition_, geometry_);
+  }
+
   bool differential_;
+  RenderPlan plan_;
   Layers layers_;
   std::unique_ptr<PlateSource> plate_;
   PlateView view_;
@@ -156,16 +263,16 @@ class CompositeFrameRenderer final : public FrameRenderer {
   render::LinearImage without_;
   render::AlbedoEstimate albedo_;
   std::uint64_t albedoPlateSeq_ = 0;
+  scene::LocalComposition composition_;  // in the light probe's world; the objects move with drags
+  const render::LightingGeometry& geometry_;
+  std::optional<CompositeWindow> window_;
+  std::string screenshot_;
+  std::uint64_t moves_ = 0;
+  render::LinearImage shownImage_;
+  bool shownDisplayReferred_ = false;
+  std::vector<std::uint8_t> shown_;
+  glm::ivec2 shownSizePx_{0, 0};
 };
-
-std::expected<std::unique_ptr<FrameRenderer>, std::string> layerRenderer(
-    const ViewerOptions& options, const RenderPlan& plan, const scene::Scene& scene,
-    const render::LightingGeometry& geometry, const std::shared_ptr<gl::GlContext>& context) {
-  if (options.renderer == RendererKind::Gl) {
-    return makeGlFrameRenderer(options, plan, scene, geometry, context);
-  }
-  return makeEmbreeFrameRenderer(options, plan, scene, geometry);
-}
 
 }  // namespace
 
@@ -178,26 +285,36 @@ std::expected<std::unique_ptr<FrameRenderer>, std::string> makeCompositeFrameRen
   layers.options->widthPx = view.renderWidthPx;
   layers.options->heightPx = view.renderHeightPx;
   layers.options->headless = true;
-  std::shared_ptr<gl::GlContext> context;
-  if (options.renderer == RendererKind::Gl) {
+  std::optional<CompositeWindow> window;
+  if (!options.headless) {
+    // The window shows the plate's picture, at most 1280 px wide.
+    const double scale = std::min(1.0, 1280.0 / double(view.plateWidthPx));
+    auto made = gl::GlContext::window(int(double(view.plateWidthPx) * scale),
+                                      int(double(view.plateHeightPx) * scale), "vemview");
+    if (!made) return std::unexpected(made.error());
+    layers.context = std::move(*made);
+    auto picture = gl::PicturePass::create();
+    if (!picture) return std::unexpected(picture.error());
+    auto overlay = gl::OverlayPass::create();
+    if (!overlay) return std::unexpected(overlay.error());
+    window.emplace(CompositeWindow{std::move(*picture), std::move(*overlay)});
+  } else if (options.renderer == RendererKind::Gl) {
     auto made = gl::GlContext::headless(view.renderWidthPx, view.renderHeightPx);
     if (!made) return std::unexpected(made.error());
-    context = std::move(*made);
+    layers.context = std::move(*made);
   }
-  auto with = layerRenderer(*layers.options, plan, composition.withObjects, geometry, context);
-  if (!with) return std::unexpected(with.error());
-  layers.withObjects = std::move(*with);
+  if (auto built = buildWithObjects(layers, plan, composition, geometry); !built) {
+    return std::unexpected(built.error());
+  }
   if (plan.composite && plan.composite->differential) {
-    auto without = layerRenderer(*layers.options, plan, composition.localOnly, geometry, context);
+    auto without =
+        layerRenderer(*layers.options, plan, composition.localOnly, geometry, layers.context);
     if (!without) return std::unexpected(without.error());
     layers.withoutObjects = std::move(*without);
   }
-  auto classes = embree::EmbreeScene::build(composition.withObjects);
-  if (!classes) return std::unexpected(classes.error());
-  layers.classesScene.emplace(std::move(*classes));
-  layers.objectMeshes = composition.objectMeshes;
   return std::make_unique<CompositeFrameRenderer>(plan, std::move(layers), std::move(plate),
-                                                  std::move(view));
+                                                  std::move(view), composition, geometry,
+                                                  std::move(window), options.screenshot);
 }
 
 }  // namespace vem::view

@@ -23,6 +23,21 @@ glm::mat4 viewFromWorldOf(const calib::PlatePose& pose) {
 
 }  // namespace
 
+std::optional<glm::vec3> floorMoveOfDrag(const PlateView& view, glm::vec3 centreWorld,
+                                         glm::vec2 dragPlatePx) {
+  const glm::vec3 floorPoint(centreWorld.x, 0.0F, centreWorld.z);
+  const int w = view.renderWidthPx;
+  const int h = view.renderHeightPx;
+  const scene::ViewCamera::Projection at = view.camera.project(floorPoint, w, h);
+  if (at.behindEye) return std::nullopt;
+  const glm::vec2 toPx = at.pixel + dragPlatePx * glm::vec2(float(w) / float(view.plateWidthPx),
+                                                            float(h) / float(view.plateHeightPx));
+  const scene::Ray ray = view.camera.primaryRay(toPx.x, toPx.y, w, h);
+  if (!(ray.dirWorld.y < -1e-4F)) return std::nullopt;
+  const float t = -ray.originWorld.y / ray.dirWorld.y;
+  return ray.originWorld + t * ray.dirWorld - floorPoint;
+}
+
 int renderHeightFor(int plateWidthPx, int plateHeightPx, int renderWidthPx) {
   return std::max(
       1, int(std::lround(double(renderWidthPx) * double(plateHeightPx) / double(plateWidthPx))));

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <expected>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,13 @@ struct PlateView {
 
 [[nodiscard]] PlateView simulatedPlateView(const scene::MixedRealityWorld& world, int renderWidthPx,
                                            int renderHeightPx);
+
+// How far the objects slide on the floor (y = 0, in the light probe's world) when the cursor drags
+// their floor point, under `centreWorld`, by dragPlatePx (plate pixels, +y down): the floor point
+// follows the cursor through the plate camera. Nothing when the point is behind the camera or the
+// cursor leaves the floor (at or above the horizon). The lens's distortion is left out.
+[[nodiscard]] std::optional<glm::vec3> floorMoveOfDrag(const PlateView& view, glm::vec3 centreWorld,
+                                                       glm::vec2 dragPlatePx);
 
 // The render height that keeps the plate's aspect at renderWidthPx (at least 1).
 [[nodiscard]] int renderHeightFor(int plateWidthPx, int plateHeightPx, int renderWidthPx);

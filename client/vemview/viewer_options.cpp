@@ -203,10 +203,6 @@ void plainValueNames(CLI::App& app) {
 
 // Why --plate cannot run with the other options given, in one sentence, or empty.
 std::string plateOptionsRefused(const CLI::App& app, const ViewerOptions& o) {
-  if (!o.headless) {
-    return "--plate composites headless for now (--headless --out DIR, --video FILE): the "
-           "window's composite comes with the OpenGL one";
-  }
   if (o.renderer == RendererKind::Reference) {
     return "--plate composites with the lights: give --renderer gl or embree, not reference";
   }

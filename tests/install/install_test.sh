@@ -11,7 +11,7 @@
 set -eu
 . "$(dirname "$0")/needs_built_tools.sh"
 tools="vemd vemtool vemview vemcalib"
-configs="vemd.toml camera-example.toml"
+configs="vemd.toml camera-example.toml plate-camera-example.toml"
 
 rm -rf "$work"
 mkdir -p "$work"

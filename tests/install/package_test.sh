@@ -35,7 +35,7 @@ for tool in vemd vemtool vemview vemcalib; do
   grep -qx -- "-rwxr-xr-x ./usr/bin/$tool" "$work/files.txt" ||
     fail "$deb: expected ./usr/bin/$tool (executable), found none (list in $work/contents.txt)"
 done
-for file in ./etc/vemcast/vemd.toml ./etc/vemcast/camera-example.toml \
+for file in ./etc/vemcast/vemd.toml ./etc/vemcast/camera-example.toml ./etc/vemcast/plate-camera-example.toml \
             ./lib/systemd/system/vemd.service ./usr/share/doc/vemcast/README.md \
             ./usr/share/doc/vemcast/docs/vemd.md ./usr/share/doc/vemcast/docs/images/main-job-render.png; do
   grep -qx -- "-rw-r--r-- $file" "$work/files.txt" ||

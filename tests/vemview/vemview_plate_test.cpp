@@ -216,9 +216,8 @@ TEST_F(VemviewPlate, LightProbeCameraFileGivenAsThePlateCameraIsRefusedInOneSent
                 "camera-example.toml", 1);
 }
 
-TEST_F(VemviewPlate, PlateWithoutItsCameraOrWithAWindowIsAUsageError) {
+TEST_F(VemviewPlate, PlateWithoutItsCameraOrWithTheReferenceRendererIsAUsageError) {
   expectRefused(" --headless --plate " + plate(), "--plate-camera", 2);
-  expectRefused(" --plate sim", "--headless", 2);
   expectRefused(" --headless --plate sim --renderer reference", "not reference", 2);
   expectRefused(" --headless --place 0,0,0,0", "--plate SOURCE", 2);
 }

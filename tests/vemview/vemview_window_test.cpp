@@ -101,6 +101,35 @@ TEST_F(VemviewWindow, WindowUnderXvfbRendersWhatTheHeadlessRunRenders) {
   EXPECT_GT(meanLevel, 20.0);
 }
 
+// The issue: "the window shows the plate with the synthetic objects in it". The composite of the
+// simulated plate in a window, both renderers for the layers; its --screenshot (what the window
+// shows, at the plate's size, before the overlay) is the headless run's picture.
+TEST_F(VemviewWindow, CompositeWindowShowsWhatTheHeadlessCompositeWrites) {
+  if (!xvfbRunInstalled()) {
+    GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb)";
+  }
+  const std::string map = std::string(VEM_SHARED_DATA_DIR) + "/hdri/sky.exr";
+  for (const std::string renderer : {"embree", "gl"}) {
+    const std::string args = " --plate sim --renderer " + renderer + " --map " + map +
+                             " --width 160 --count 64 --frames 2 ";
+    const CommandRun window = runUnderXvfb(args + "--screenshot " + path(renderer + ".png"));
+    ASSERT_EQ(window.exitCode, 0) << window.err;
+    const CommandRun headless = run(kTimeout, args + "--headless --out " + path(renderer));
+    ASSERT_EQ(headless.exitCode, 0) << headless.err;
+    const auto shot = vem::render::loadSrgb8(dir_ / (renderer + ".png"));
+    ASSERT_TRUE(shot.has_value()) << shot.error();
+    const auto expected = vem::render::loadSrgb8(dir_ / renderer / "frame-000000.png");
+    ASSERT_TRUE(expected.has_value()) << expected.error();
+    ASSERT_EQ(shot->widthPx, 160);
+    ASSERT_EQ(shot->heightPx, 120);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < shot->rgb.size(); ++i) {
+      differing += std::abs(int(shot->rgb[i]) - int(expected->rgb[i])) > 1 ? 1U : 0U;
+    }
+    EXPECT_LT(double(differing) / double(shot->rgb.size()), 0.001) << renderer;
+  }
+}
+
 TEST_F(VemviewWindow, WindowWithoutADisplayFailsWithOneSentence) {
   const CommandRun r = run(std::string(kTimeout) + "env -u DISPLAY -u WAYLAND_DISPLAY ",
                         " --width 64 --height 48 --frames 1 --scene spheres --count 16 "
