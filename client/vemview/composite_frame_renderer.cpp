@@ -145,6 +145,11 @@ class CompositeFrameRenderer final : public FrameRenderer {
 
   bool ownInputEnded() const override { return plate_->ended() && !plate_->live(); }
 
+  std::optional<double> ownInputCaptureUnixSec() const override {
+    if (!last_ || !last_->captureOnSystemClock) return std::nullopt;
+    return last_->captureTimeSec;
+  }
+
   RenderedFrame render(const scene::ViewCamera& /*camera*/, const render::ShadingLights& lights,
                        const InputFrame& input) override {
     const auto start = std::chrono::steady_clock::now();

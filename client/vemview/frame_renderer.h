@@ -52,6 +52,11 @@ class FrameRenderer {
   // file source (a video, a sequence) has no more. 0 and false for the others.
   [[nodiscard]] virtual std::uint64_t pollOwnInput() { return 0; }
   [[nodiscard]] virtual bool ownInputEnded() const { return false; }
+  // When its input's current picture was captured, on the system clock (a live camera), so the
+  // loop can pick the light frame captured nearest to it; nothing otherwise.
+  [[nodiscard]] virtual std::optional<double> ownInputCaptureUnixSec() const {
+    return std::nullopt;
+  }
   // Shows the last frame tone-mapped, with `overlay` text lines (windows only).
   virtual void present(const render::ToneParams& /*tone*/, const std::string& /*overlay*/) {}
   // False once the user closed the window.

@@ -17,6 +17,7 @@
 #include "client/vemview/composite_setup.h"
 #include "client/vemview/frame_renderer.h"
 #include "client/vemview/frame_writer.h"
+#include "client/vemview/light_frame_ring.h"
 #include "client/vemview/light_input.h"
 #include "client/vemview/render_plan.h"
 #include "client/vemview/scene_argument.h"
@@ -90,6 +91,7 @@ struct Viewer {
   std::uint64_t cameraVersion = 1;
   std::optional<FrameWriter> writer;
   std::optional<VideoOutput> video;
+  LightFrameRing recentLights;  // --plate: the light frames a picture may be aligned with
   std::optional<AdaptiveLightCount> adaptive;
   render::ToneSmoother tone{0.5};
   std::optional<FrameState> lastDrawn;
@@ -135,8 +137,23 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
     v.camera = scene::orbited(v.camera, drag + float(stepRad));
     ++v.cameraVersion;
   }
+  const std::uint64_t ownInput = v.renderer->pollOwnInput();
+  std::string lightSync;
+  if (!v.options.plate.empty()) {
+    // Time alignment: the light frame captured nearest to the picture, within the window.
+    v.recentLights.push(*frame);
+    if (const std::optional<double> pictureSec = v.renderer->ownInputCaptureUnixSec()) {
+      const LightFrameRing::Choice choice =
+          v.recentLights.nearest(*pictureSec, v.options.plateSyncWindowSec);
+      frame = *choice.frame;
+      lightSync = choice.withinWindow
+                      ? "nearest"
+                      : fmt::format("newest: none within {:.0f} ms",
+                                    v.options.plateSyncWindowSec * 1000.0);
+    }
+  }
   const std::size_t count = v.adaptive ? v.adaptive->count() : v.plan.lighting.lightCount;
-  const FrameState state{frame->seq, v.cameraVersion, count, v.renderer->pollOwnInput()};
+  const FrameState state{frame->seq, v.cameraVersion, count, ownInput};
   const FrameDecision decision = decideFrame(v.lastDrawn, state);
   FrameRecord record{frameIndex, frame->seq, decision.redraw, false, {}};
   double shadingMs = 0.0;
@@ -163,6 +180,7 @@ std::expected<bool, std::string> step(Viewer& v, std::uint64_t frameIndex) {
   record.timing["lights"] = v.shading.diffuse.lights.size();
   record.timing["shadowed"] = v.shading.shadowDirs.size();
   record.timing["shading_lights_ms"] = shadingMs;
+  if (!lightSync.empty()) record.timing["light_sync"] = lightSync;
   record.timing["render_ms"] = decision.redraw ? v.last.renderMs : 0.0;
   LightCounts counts =
       lightCountsOf(v.shading, clusteredFrom(v, *frame, count), v.plan.lighting.shadowedCount);

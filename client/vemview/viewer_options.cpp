@@ -162,6 +162,11 @@ void addPlateOptions(CLI::App& app, ViewerOptions& o) {
          "degrees about +Y")
       ->delimiter(',')
       ->expected(4);
+  app.add_option_function<double>(
+         "--plate-sync-ms", [&o](double ms) { o.plateSyncWindowSec = ms / 1000.0; },
+         "A live plate with vemd's stream: each picture takes the light frame captured nearest "
+         "to it within this many ms (default 100), else the newest")
+      ->check(CLI::Range(0.0, 10000.0));
   app.add_option("--video", o.videoFile, "Headless with --plate: also write the frames as a "
                                          "video (MP4, OpenCV's VideoWriter)");
 }
@@ -176,7 +181,7 @@ void plainValueNames(CLI::App& app) {
       {"--out", "DIR"},       {"--screenshot", "FILE"}, {"--target-ms", "MS"},
       {"--orbit", "DEGREES"}, {"--azimuth", "DEGREES"}, {"--timeout", "SECONDS"},
       {"--plate", "SOURCE"},  {"--plate-camera", "FILE"}, {"--local-scene", "FILE"},
-      {"--place", "X,Y,Z,YAW"}, {"--video", "FILE"}};
+      {"--place", "X,Y,Z,YAW"}, {"--video", "FILE"}, {"--plate-sync-ms", "MS"}};
   static const std::regex kRange{R"(^\S+ in \[(\S+) - (\S+)\]$)"};
   for (CLI::Option* option : app.get_options()) {
     if (const auto named = kNames.find(option->get_name()); named != kNames.end()) {
@@ -252,7 +257,8 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
     }
     o.shading = ShadingKind::Ratio;  // the differential render shades by ratio (issue 20)
     if (app.count("--scene") == 0) o.scene = "mixed-reality";
-  } else if (!o.plateCamera.empty() || !o.localScene.empty() || o.place || !o.videoFile.empty()) {
+  } else if (!o.plateCamera.empty() || !o.localScene.empty() || o.place || !o.videoFile.empty() ||
+             app.count("--plate-sync-ms") > 0) {
     std::cerr << "vemview: error: --plate-camera, --local-scene, --place and --video composite "
                  "into a plate: give --plate SOURCE too\n";
     return std::unexpected(cli::kExitUsage);

@@ -69,6 +69,9 @@ struct ViewerOptions {
   std::string localScene;
   std::optional<Placement> place;
   std::string videoFile;
+  // A live plate with vemd's stream: each picture takes the light frame captured nearest to it
+  // within this window (else the newest, and the frame says so).
+  double plateSyncWindowSec = 0.1;
 };
 
 // The options, or the exit status (util/cli_conventions.h: 0 after --help, 2 for a usage error)
