@@ -1,6 +1,7 @@
 #include "calib/io/calibration_fields.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -41,6 +42,20 @@ bool onSensor(const glm::dvec2& point, const CameraIdentity& camera) {
 }
 
 }  // namespace
+
+void readFileHeader(util::TomlReader& root, const FileHeader& header) {
+  const std::string format = root.string("format");
+  root.require(
+      format == header.formatName, "format",
+      "expected \"" + std::string(header.formatName) + "\", found \"" + format + "\"" +
+          std::string(format == header.otherFormat ? header.otherNote : header.foreignNote));
+  const std::int64_t version = root.integer("version", std::numeric_limits<std::int64_t>::min(),
+                                            std::numeric_limits<std::int64_t>::max());
+  if (root.ok() && version != header.version)
+    root.fail("version", util::TomlProblem::UnknownVersion,
+              "unknown version " + std::to_string(version) +
+                  " (this build of vemcast reads version " + std::to_string(header.version) + ")");
+}
 
 glm::dvec2 readPrincipalPoint(util::TomlReader& r, const CameraIdentity& camera) {
   const std::vector<double> centre = r.quantityArray("principal_point", kUnitPx, {2, "x and y"});

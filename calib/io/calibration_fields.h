@@ -1,8 +1,10 @@
 // Fields that the camera file (camera_file.h) and the plate-camera file (plate_camera_file.h) share
-// (internal to vem_calibio): the [camera] table, a geometric fit's quality and angles written in
-// degrees that read back exactly. One copy, read and written the same way in both files.
+// (internal to vem_calibio): the format and version they open with, the [camera] table, a
+// geometric fit's quality and angles written in degrees that read back exactly. One copy, read and
+// written the same way in both files.
 #pragma once
 
+#include <cstdint>
 #include <string_view>
 
 #include <glm/vec2.hpp>
@@ -12,6 +14,19 @@
 #include "util/toml_reader.h"
 
 namespace vem::calib::io::detail {
+
+// What a calibration file's `format` and `version` keys must hold, and what to say when they do
+// not.
+struct FileHeader {
+  std::string_view formatName;   // "vemcast-camera"
+  std::int64_t version;          // the one version this build reads
+  std::string_view otherFormat;  // the other calibration file's format name
+  std::string_view otherNote;    // after a refusal of otherFormat: " (a plate camera file, ...)"
+  std::string_view foreignNote;  // after a refusal of any other: " (not a vemcast camera file)"
+};
+
+// format and version, read first: a newer file is refused for its version, not for its new fields.
+void readFileHeader(util::TomlReader& root, const FileHeader& header);
 
 // [camera]: model, serial, sensor_width and sensor_height in "px", pixel_format.
 [[nodiscard]] CameraIdentity readCameraIdentity(util::TomlReader r);

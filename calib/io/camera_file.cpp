@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <utility>
 #include <vector>
@@ -26,21 +25,9 @@ std::array<double, 3> channelArray(const std::vector<double>& values) {
   return out;
 }
 
-void readHeader(FieldReader& root) {
-  const std::string format = root.string("format");
-  root.require(format == detail::kCameraFormatName, "format",
-               "expected \"vemcast-camera\", found \"" + format + "\"" +
-                   (format == detail::kPlateCameraFormatName
-                        ? " (a plate camera file, not a light-probe camera file)"
-                        : " (not a vemcast camera file)"));
-  const std::int64_t version = root.integer("version", std::numeric_limits<std::int64_t>::min(),
-                                            std::numeric_limits<std::int64_t>::max());
-  if (root.ok() && version != kCameraFileVersion)
-    root.fail("version", util::TomlProblem::UnknownVersion,
-              "unknown version " + std::to_string(version) +
-                  " (this build of vemcast reads version " + std::to_string(kCameraFileVersion) +
-                  ")");
-}
+constexpr detail::FileHeader kCameraFileHeader{
+    detail::kCameraFormatName, kCameraFileVersion, detail::kPlateCameraFormatName,
+    " (a plate camera file, not a light-probe camera file)", " (not a vemcast camera file)"};
 
 PhotometricQuality readPhotometricFit(FieldReader r) {
   r.onlyKeys(
@@ -189,31 +176,22 @@ CameraCalibration readCalibration(FieldReader& root) {
 
 std::expected<CameraCalibration, CalibFileFailure> parseCameraFile(const std::string& text,
                                                                    const std::string& sourceName) {
-  const auto document = util::parseToml(text, sourceName);
-  if (!document) return std::unexpected(detail::calibFileFailure(document.error()));
-  util::TomlStatus status{sourceName, std::nullopt};
-  FieldReader root(*document, "", status);
-  readHeader(root);  // first: a newer file is refused for its version, not for its new fields
-  CameraCalibration calibration = readCalibration(root);
-  if (!status.ok()) return std::unexpected(detail::calibFileFailure(*status.failure));
-  return calibration;
+  return detail::parseTomlText(text, sourceName, [](FieldReader& root, util::TomlStatus&) {
+    // The header first: a newer file is refused for its version, not for its new fields.
+    detail::readFileHeader(root, kCameraFileHeader);
+    return readCalibration(root);
+  });
 }
 
 std::expected<CameraCalibration, CalibFileFailure> loadCameraFile(
     const std::filesystem::path& path) {
-  const auto text = detail::readWholeFile(path, "camera file");
-  if (!text) return std::unexpected(text.error());
-  return parseCameraFile(*text, path.string());
+  return detail::loadTextFile(path, "camera file", parseCameraFile);
 }
 
 std::expected<void, CalibFileFailure> saveCameraFile(const CameraCalibration& calibration,
                                                      const std::filesystem::path& path) {
-  const std::string text = formatCameraFile(calibration);
-  // Never write a file that would not load: the same checks, before the old file is touched.
-  if (auto checked = parseCameraFile(text, path.string()); !checked)
-    return std::unexpected(CalibFileFailure{checked.error().cause,
-                                            checked.error().message + ", so nothing was written"});
-  return detail::writeTextFile(path, text, "camera file");
+  return detail::saveCheckedTextFile(path, formatCameraFile(calibration), "camera file",
+                                     parseCameraFile);
 }
 
 }  // namespace vem::calib::io

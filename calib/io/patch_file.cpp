@@ -1,7 +1,5 @@
 #include "calib/io/patch_file.h"
 
-#include <set>
-
 #include "calib/io/file_access.h"
 #include "calib/io/patch_label.h"
 #include "calib/io/toml_writer.h"
@@ -51,32 +49,16 @@ PatchSpec readPatch(FieldReader r) {
 
 std::expected<std::vector<PatchSpec>, CalibFileFailure> parsePatchFile(const std::string& text,
                                                                        const std::string& source) {
-  const auto document = util::parseToml(text, source);
-  if (!document) return std::unexpected(detail::calibFileFailure(document.error()));
-  util::TomlStatus status{source, std::nullopt};
-  FieldReader root(*document, "", status);
-  root.onlyKeys({"patch"});
-  const toml::array* tables = root.tableArray("patch");
-  std::vector<PatchSpec> patches;
-  std::set<std::string> names;
-  for (std::size_t i = 0; tables != nullptr && i < tables->size() && status.ok(); ++i) {
-    const toml::table& table = *tables->get(i)->as_table();
-    FieldReader patch(table, detail::patchLabel(i, table) + ": ", status);
-    patches.push_back(readPatch(patch));
-    patch.require(!status.ok() || names.insert(patches.back().name).second, "name",
-                  "the name is used by an earlier patch too (expected unique names)");
-  }
-  if (!status.ok()) return std::unexpected(detail::calibFileFailure(*status.failure));
-  return patches;
+  return detail::parseTomlText(text, source, [](FieldReader& root, util::TomlStatus& status) {
+    return detail::readPatchTables(root, status, readPatch);
+  });
 }
 
 }  // namespace
 
 std::expected<std::vector<PatchSpec>, CalibFileFailure> loadPatchFile(
     const std::filesystem::path& path) {
-  const auto text = detail::readWholeFile(path, "patch file");
-  if (!text) return std::unexpected(text.error());
-  return parsePatchFile(*text, path.string());
+  return detail::loadTextFile(path, "patch file", parsePatchFile);
 }
 
 std::string formatPatchFile(std::span<const PatchSpec> patches) {
@@ -98,11 +80,7 @@ std::string formatPatchFile(std::span<const PatchSpec> patches) {
 
 std::expected<void, CalibFileFailure> savePatchFile(std::span<const PatchSpec> patches,
                                                     const std::filesystem::path& path) {
-  const std::string text = formatPatchFile(patches);
-  if (auto checked = parsePatchFile(text, path.string()); !checked)
-    return std::unexpected(CalibFileFailure{checked.error().cause,
-                                            checked.error().message + ", so nothing was written"});
-  return detail::writeTextFile(path, text, "patch file");
+  return detail::saveCheckedTextFile(path, formatPatchFile(patches), "patch file", parsePatchFile);
 }
 
 }  // namespace vem::calib::io

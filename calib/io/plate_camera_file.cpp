@@ -3,7 +3,6 @@
 #include "calib/io/plate_camera_file.h"
 
 #include <cmath>
-#include <limits>
 
 #include <fmt/format.h>
 #include <glm/matrix.hpp>
@@ -20,21 +19,9 @@ namespace {
 using util::shortestText;
 using FieldReader = util::TomlReader;
 
-void readHeader(FieldReader& root) {
-  const std::string format = root.string("format");
-  root.require(format == detail::kPlateCameraFormatName, "format",
-               "expected \"vemcast-plate-camera\", found \"" + format + "\"" +
-                   (format == detail::kCameraFormatName
-                        ? " (a light-probe camera file, not a plate camera file)"
-                        : " (not a vemcast plate camera file)"));
-  const std::int64_t version = root.integer("version", std::numeric_limits<std::int64_t>::min(),
-                                            std::numeric_limits<std::int64_t>::max());
-  if (root.ok() && version != kPlateCameraFileVersion)
-    root.fail("version", util::TomlProblem::UnknownVersion,
-              "unknown version " + std::to_string(version) +
-                  " (this build of vemcast reads version " +
-                  std::to_string(kPlateCameraFileVersion) + ")");
-}
+constexpr detail::FileHeader kPlateCameraFileHeader{
+    detail::kPlateCameraFormatName, kPlateCameraFileVersion, detail::kCameraFormatName,
+    " (a light-probe camera file, not a plate camera file)", " (not a vemcast plate camera file)"};
 
 PlateLensModel readLensModel(FieldReader& r) {
   const std::string name = r.string("model");
@@ -143,31 +130,22 @@ PlateCamera readPlate(FieldReader& root) {
 
 std::expected<PlateCamera, CalibFileFailure> parsePlateCameraFile(const std::string& text,
                                                                   const std::string& sourceName) {
-  const auto document = util::parseToml(text, sourceName);
-  if (!document) return std::unexpected(detail::calibFileFailure(document.error()));
-  util::TomlStatus status{sourceName, std::nullopt};
-  FieldReader root(*document, "", status);
-  readHeader(root);  // first: a newer file is refused for its version, not for its new fields
-  PlateCamera plate = readPlate(root);
-  if (!status.ok()) return std::unexpected(detail::calibFileFailure(*status.failure));
-  return plate;
+  return detail::parseTomlText(text, sourceName, [](FieldReader& root, util::TomlStatus&) {
+    // The header first: a newer file is refused for its version, not for its new fields.
+    detail::readFileHeader(root, kPlateCameraFileHeader);
+    return readPlate(root);
+  });
 }
 
 std::expected<PlateCamera, CalibFileFailure> loadPlateCameraFile(
     const std::filesystem::path& path) {
-  const auto text = detail::readWholeFile(path, "plate camera file");
-  if (!text) return std::unexpected(text.error());
-  return parsePlateCameraFile(*text, path.string());
+  return detail::loadTextFile(path, "plate camera file", parsePlateCameraFile);
 }
 
 std::expected<void, CalibFileFailure> savePlateCameraFile(const PlateCamera& plate,
                                                           const std::filesystem::path& path) {
-  const std::string text = formatPlateCameraFile(plate);
-  // Never write a file that would not load: the same checks, before the old file is touched.
-  if (auto checked = parsePlateCameraFile(text, path.string()); !checked)
-    return std::unexpected(CalibFileFailure{checked.error().cause,
-                                            checked.error().message + ", so nothing was written"});
-  return detail::writeTextFile(path, text, "plate camera file");
+  return detail::saveCheckedTextFile(path, formatPlateCameraFile(plate), "plate camera file",
+                                     parsePlateCameraFile);
 }
 
 }  // namespace vem::calib::io

@@ -1,7 +1,5 @@
 #include "calib/io/plate_colour_file.h"
 
-#include <set>
-
 #include "calib/io/file_access.h"
 #include "calib/io/patch_label.h"
 #include "calib/io/toml_writer.h"
@@ -33,32 +31,16 @@ ColourPatch readPatch(FieldReader r) {
 
 std::expected<std::vector<ColourPatch>, CalibFileFailure> parseColourPatchFile(
     const std::string& text, const std::string& source) {
-  const auto document = util::parseToml(text, source);
-  if (!document) return std::unexpected(detail::calibFileFailure(document.error()));
-  util::TomlStatus status{source, std::nullopt};
-  FieldReader root(*document, "", status);
-  root.onlyKeys({"patch"});
-  const toml::array* tables = root.tableArray("patch");
-  std::vector<ColourPatch> patches;
-  std::set<std::string> names;
-  for (std::size_t i = 0; tables != nullptr && i < tables->size() && status.ok(); ++i) {
-    const toml::table& table = *tables->get(i)->as_table();
-    FieldReader patch(table, detail::patchLabel(i, table) + ": ", status);
-    patches.push_back(readPatch(patch));
-    patch.require(!status.ok() || names.insert(patches.back().name).second, "name",
-                  "the name is used by an earlier patch too (expected unique names)");
-  }
-  if (!status.ok()) return std::unexpected(detail::calibFileFailure(*status.failure));
-  return patches;
+  return detail::parseTomlText(text, source, [](FieldReader& root, util::TomlStatus& status) {
+    return detail::readPatchTables(root, status, readPatch);
+  });
 }
 
 }  // namespace
 
 std::expected<std::vector<ColourPatch>, CalibFileFailure> loadColourPatchFile(
     const std::filesystem::path& path) {
-  const auto text = detail::readWholeFile(path, "colour patch file");
-  if (!text) return std::unexpected(text.error());
-  return parseColourPatchFile(*text, path.string());
+  return detail::loadTextFile(path, "colour patch file", parseColourPatchFile);
 }
 
 std::string formatColourPatchFile(std::span<const ColourPatch> patches) {
@@ -76,11 +58,8 @@ std::string formatColourPatchFile(std::span<const ColourPatch> patches) {
 
 std::expected<void, CalibFileFailure> saveColourPatchFile(std::span<const ColourPatch> patches,
                                                           const std::filesystem::path& path) {
-  const std::string text = formatColourPatchFile(patches);
-  if (auto checked = parseColourPatchFile(text, path.string()); !checked)
-    return std::unexpected(CalibFileFailure{checked.error().cause,
-                                            checked.error().message + ", so nothing was written"});
-  return detail::writeTextFile(path, text, "colour patch file");
+  return detail::saveCheckedTextFile(path, formatColourPatchFile(patches), "colour patch file",
+                                     parseColourPatchFile);
 }
 
 }  // namespace vem::calib::io

@@ -17,13 +17,23 @@ int reportFailure(const std::string& sentence) {
   return cli::kExitFailure;
 }
 
+std::string unloadableOutput(const calib::io::CalibFileFailure& failure) {
+  return failure.message + " (the output file must load before it is updated)";
+}
+
+bool reportWritten(const std::expected<void, calib::io::CalibFileFailure>& saved,
+                   const std::string& path, const std::string& what) {
+  if (!saved) {
+    reportFailure(saved.error().message);
+    return false;
+  }
+  fmt::print("wrote {}: {}\n", path, what);
+  return true;
+}
+
 std::expected<std::optional<calib::CameraCalibration>, std::string> loadCameraToMerge(
     const std::filesystem::path& path) {
-  auto existing = calib::io::loadCameraFile(path);
-  if (existing) return std::optional(std::move(*existing));
-  if (existing.error().cause == calib::io::CalibFileError::NotFound) return std::nullopt;
-  return std::unexpected(existing.error().message +
-                         " (the output file must load before it is updated)");
+  return toMerge(calib::io::loadCameraFile(path));
 }
 
 calib::CameraCalibration newCameraFor(const RawFrame& frame) {

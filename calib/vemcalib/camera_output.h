@@ -6,8 +6,10 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "calib/core/camera_calibration.h"
+#include "calib/io/calib_file_failure.h"
 #include "frames/raw_frame.h"
 #include "util/cli_conventions.h"
 
@@ -19,6 +21,25 @@ namespace vem::calibtool {
 
 // Logs `sentence` as the command's one error line and returns cli::kExitFailure.
 int reportFailure(const std::string& sentence);
+
+// The loader's sentence for an output file that exists but does not load, which is never
+// overwritten: "<its sentence> (the output file must load before it is updated)".
+[[nodiscard]] std::string unloadableOutput(const calib::io::CalibFileFailure& failure);
+
+// What a loader of calib/io returned for the output file, as the file to merge into: nullopt when
+// there is no file, or unloadableOutput.
+template <typename T>
+[[nodiscard]] std::expected<std::optional<T>, std::string> toMerge(
+    std::expected<T, calib::io::CalibFileFailure> loaded) {
+  if (loaded) return std::optional(std::move(*loaded));
+  if (loaded.error().cause == calib::io::CalibFileError::NotFound) return std::nullopt;
+  return std::unexpected(unloadableOutput(loaded.error()));
+}
+
+// Prints "wrote <path>: <what>" when `saved`, else reports its failure (reportFailure); whether the
+// file was written.
+[[nodiscard]] bool reportWritten(const std::expected<void, calib::io::CalibFileFailure>& saved,
+                                 const std::string& path, const std::string& what);
 
 // The calibration already at `path` (nullopt when there is no file), or the loader's sentence: a
 // file that does not load is never overwritten.

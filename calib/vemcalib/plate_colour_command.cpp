@@ -61,9 +61,9 @@ int runPlateColour(const PlateColourOptions& o) {
       match.gainRgb[0], match.gainRgb[1], match.gainRgb[2]);
   plate->colour = match;
   plate->colour->date = utcDateNow();
-  if (auto saved = calib::io::savePlateCameraFile(*plate, o.out); !saved)
-    return reportFailure(saved.error().message);
-  fmt::print("wrote {}: the colour section (the rest of the file is kept)\n", o.out);
+  if (!reportWritten(calib::io::savePlateCameraFile(*plate, o.out), o.out,
+                     "the colour section (the rest of the file is kept)"))
+    return cli::kExitFailure;
   return EXIT_SUCCESS;
 }
 

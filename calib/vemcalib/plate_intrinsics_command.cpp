@@ -13,35 +13,26 @@
 #include <CLI/CLI.hpp>
 
 #include "board_argument.h"
+#include "board_views.h"
 #include "calib/core/plate_intrinsics_fit.h"
 #include "calib/io/plate_camera_file.h"
 #include "camera_output.h"
 #include "commands.h"
 #include "plate_output.h"
-#include "util/cli_value_names.h"
 
 namespace vem::calibtool {
 namespace {
 
 struct PlateIntrinsicsOptions {
-  std::vector<std::string> images;
-  std::string board;
-  double squareMm = 0.0;
+  BoardViewOptions views{calib::PlateIntrinsicsFitOptions{}.maxRmsPx,
+                         calib::PlateIntrinsicsFitOptions{}.minViews};
   calib::PlateLensModel model = calib::PlateLensModel::BrownConrady;
   std::string out;
-  double maxRmsPx = calib::PlateIntrinsicsFitOptions{}.maxRmsPx;
-  int minViews = calib::PlateIntrinsicsFitOptions{}.minViews;
-  std::optional<int> bits;
-  bool skipMissing = false;
 };
 
 void printFit(const calib::PlateIntrinsicsFit& fit, const BoardImages& views, double maxRmsPx) {
-  fmt::print("view  rms px  image\n");
-  for (std::size_t v = 0; v < fit.viewRmsPx.size(); ++v)
-    fmt::print("{:>4}  {:>6.3f}  {}\n", v, fit.viewRmsPx[v], views.names[v]);
+  printViewFit(fit.viewRmsPx, views, fit.quality, maxRmsPx);
   const calib::PlateIntrinsics& in = fit.intrinsics;
-  fmt::print("fit: {} views, {} corners: rms reprojection {:.3f} px (limit {:g} px)\n",
-             fit.quality.views, fit.quality.corners, fit.quality.rmsReprojectionPx, maxRmsPx);
   fmt::print(
       "intrinsics: {} lens, fx {:.3f} px, fy {:.3f} px, principal point ({:.3f}, {:.3f}) px\n",
       calib::plateLensModelName(in.model), in.fxPx, in.fyPx, in.cxPx, in.cyPx);
@@ -54,21 +45,18 @@ void printFit(const calib::PlateIntrinsicsFit& fit, const BoardImages& views, do
 int writePlate(const PlateIntrinsicsOptions& o, const std::optional<calib::PlateCamera>& existing,
                const BoardImages& views, const calib::PlateIntrinsicsFit& fit) {
   calib::PlateCamera plate;
-  if (existing) {
+  if (existing)
     plate = *existing;
-  } else {
-    plate.camera.sensorWidthPx = views.frames.front().width;
-    plate.camera.sensorHeightPx = views.frames.front().height;
-    plate.camera.pixelFormat = views.frames.front().format;
-  }
+  else
+    plate.camera = newCameraFor(views.frames.front()).camera;
   plate.intrinsics = fit.intrinsics;
   plate.intrinsicsQuality = fit.quality;
   plate.intrinsicsQuality.date = utcDateNow();
-  if (auto saved = calib::io::savePlateCameraFile(plate, o.out); !saved)
-    return reportFailure(saved.error().message);
-  fmt::print("wrote {}: {}\n", o.out,
-             existing ? "the intrinsics section (the rest of the file is kept)"
-                      : "a new plate camera file (model and serial \"unknown\": edit them there)");
+  if (!reportWritten(
+          calib::io::savePlateCameraFile(plate, o.out), o.out,
+          existing ? "the intrinsics section (the rest of the file is kept)"
+                   : "a new plate camera file (model and serial \"unknown\": edit them there)"))
+    return cli::kExitFailure;
   if (existing && existing->pose)
     spdlog::warn(
         "{}: the pose was found through the old intrinsics; run vemcalib plate pose "
@@ -80,11 +68,10 @@ int writePlate(const PlateIntrinsicsOptions& o, const std::optional<calib::Plate
 int runPlateIntrinsics(const PlateIntrinsicsOptions& o) {
   const auto existing = loadPlateToMerge(o.out);
   if (!existing) return reportFailure(existing.error());
-  const auto [cols, rows] = *parseBoardSize(o.board);  // validated by CLI11
-  const calib::Checkerboard board{cols, rows, o.squareMm};
-  std::optional<int> bits = o.bits;
+  const calib::Checkerboard board = boardOf(o.views.board.size, o.views.board.squareMm);
+  std::optional<int> bits = o.views.bits;
   if (!bits && *existing) bits = (*existing)->camera.pixelFormat.bits;
-  const auto views = findBoardsInImages(o.images, board, bits, o.skipMissing);
+  const auto views = findBoardsInImages(o.views.images, board, bits, o.views.skipMissing);
   if (!views) return reportFailure(views.error() + " (nothing was written)");
   if (views->frames.empty()) return reportFailure("no image shows the board (nothing was written)");
   if (*existing)
@@ -94,14 +81,9 @@ int runPlateIntrinsics(const PlateIntrinsicsOptions& o) {
                views->frames.size());
   const RawFrame& frame = views->frames.front();
   const auto fit = calib::fitPlateIntrinsics(views->corners, board, frame.width, frame.height,
-                                             {o.model, o.minViews, o.maxRmsPx});
-  if (!fit) {
-    const calib::PlateFitFailure& f = fit.error();
-    const std::string where =
-        f.view >= 0 ? views->names[std::size_t(f.view)] + ": " : std::string();
-    return reportFailure(where + f.message + " (nothing was written)");
-  }
-  printFit(*fit, *views, o.maxRmsPx);
+                                             {o.model, o.views.minViews, o.views.maxRmsPx});
+  if (!fit) return reportFailure(viewRefusal(fit.error().view, fit.error().message, *views));
+  printFit(*fit, *views, o.views.maxRmsPx);
   return writePlate(o, *existing, *views, *fit);
 }
 
@@ -125,14 +107,7 @@ void addPlateIntrinsicsCommand(CLI::App& plate, int& exitCode) {
   CLI::App* cmd = plate.add_subcommand(
       "intrinsics", "Fit the plate camera's intrinsics to images of a checkerboard (OpenCV)");
   cmd->footer(kPlateIntrinsicsFooter);
-  cmd->add_option("--image", o->images, "Images of the checkerboard: FILE ...")->required();
-  cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
-      ->required()
-      ->type_name("COLSxROWS")
-      ->check(help::quiet(boardSizeValidator()));
-  cmd->add_option("--square", o->squareMm, "Side of a square, mm")
-      ->required()
-      ->check(help::quiet(CLI::PositiveNumber));
+  addBoardViewOptions(cmd, o->views);
   const std::map<std::string, calib::PlateLensModel> models{
       {"brown-conrady", calib::PlateLensModel::BrownConrady},
       {"kannala-brandt", calib::PlateLensModel::KannalaBrandt}};
@@ -140,19 +115,7 @@ void addPlateIntrinsicsCommand(CLI::App& plate, int& exitCode) {
       ->transform(CLI::CheckedTransformer(models, CLI::ignore_case))
       ->default_str("brown-conrady");
   cmd->add_option("--out", o->out, "Plate-camera file to update or create (TOML)")->required();
-  cmd->add_option("--max-rms", o->maxRmsPx, "Largest RMS reprojection error accepted, pixels")
-      ->capture_default_str()
-      ->check(help::quiet(CLI::PositiveNumber));
-  cmd->add_option("--min-views", o->minViews, "Fewest views with a board accepted")
-      ->capture_default_str()
-      ->type_name(help::rangeName(1, 1000))
-      ->check(help::quiet(CLI::Range(1, 1000)));
-  cmd->add_option("--bits", o->bits,
-                  "Bits per code in 16-bit images, e.g. 12 (default: the --out file's, else the "
-                  "image's depth)")
-      ->check(CLI::IsMember({8, 10, 12, 16}));
-  cmd->add_flag("--skip-missing", o->skipMissing,
-                "Leave out images without the board (with a warning) instead of refusing");
+  addBoardViewLimitOptions(cmd, o->views);
   cmd->callback([o, &exitCode] { exitCode = runPlateIntrinsics(*o); });
 }
 

@@ -1,6 +1,6 @@
 // What the `vemcalib plate ...` commands share: the plate-camera file they merge into (an existing
-// file is loaded first and only the command's own section is replaced; commands.h), the board
-// images they read, and the plate's pose in words.
+// file is loaded first and only the command's own section is replaced; commands.h) and the plate's
+// pose in words. The board images they read are board_views.h's.
 #pragma once
 
 #include <expected>
@@ -8,13 +8,8 @@
 #include <numbers>
 #include <optional>
 #include <string>
-#include <vector>
 
-#include <glm/vec2.hpp>
-
-#include "calib/core/checkerboard.h"
 #include "calib/core/plate_camera.h"
-#include "frames/raw_frame.h"
 
 namespace vem::calibtool {
 
@@ -29,19 +24,6 @@ inline constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 // the intrinsics"), or one sentence.
 [[nodiscard]] std::expected<calib::PlateCamera, std::string> loadPlateToUpdate(
     const std::filesystem::path& path, const std::string& what);
-
-// Images of a checkerboard with the corners the detector found in each.
-struct BoardImages {
-  std::vector<RawFrame> frames;
-  std::vector<std::vector<glm::dvec2>> corners;
-  std::vector<std::string> names;
-};
-
-// Loads every image (all of one size and format, `bits`-bit codes when given) and finds the board
-// in each; an image without it is refused, or left out with a warning when skipMissing.
-[[nodiscard]] std::expected<BoardImages, std::string> findBoardsInImages(
-    const std::vector<std::string>& images, const calib::Checkerboard& board,
-    std::optional<int> bits, bool skipMissing);
 
 // "(0.900, 1.400, -1.650) m, heading 195.0 deg, looking 36.7 deg down, roll 0.0 deg"
 [[nodiscard]] std::string describePose(const calib::PlatePose& pose);

@@ -11,20 +11,19 @@
 #include <CLI/CLI.hpp>
 
 #include "board_argument.h"
+#include "board_views.h"
 #include "calib/core/plate_pose_fit.h"
 #include "calib/io/plate_camera_file.h"
 #include "camera_output.h"
 #include "commands.h"
 #include "plate_output.h"
-#include "util/cli_value_names.h"
 
 namespace vem::calibtool {
 namespace {
 
 struct PlatePoseOptions {
   std::string image;
-  std::string board;
-  double squareMm = 0.0;
+  BoardOptions board;
   std::string out;
   double maxRmsPx = 1.0;
   std::optional<int> bits;
@@ -33,8 +32,7 @@ struct PlatePoseOptions {
 int runPlatePose(const PlatePoseOptions& o) {
   auto plate = loadPlateToUpdate(o.out, "the pose needs the plate camera's intrinsics");
   if (!plate) return reportFailure(plate.error());
-  const auto [cols, rows] = *parseBoardSize(o.board);  // validated by CLI11
-  const calib::Checkerboard board{cols, rows, o.squareMm};
+  const calib::Checkerboard board = boardOf(o.board.size, o.board.squareMm);
   const auto views =
       findBoardsInImages({o.image}, board, o.bits.value_or(plate->camera.pixelFormat.bits), false);
   if (!views) return reportFailure(views.error() + " (nothing was written)");
@@ -54,9 +52,9 @@ int runPlatePose(const PlatePoseOptions& o) {
   plate->pose = fit->pose;
   plate->poseQuality = fit->quality;
   plate->poseQuality.date = utcDateNow();
-  if (auto saved = calib::io::savePlateCameraFile(*plate, o.out); !saved)
-    return reportFailure(saved.error().message);
-  fmt::print("wrote {}: the pose section (the rest of the file is kept)\n", o.out);
+  if (!reportWritten(calib::io::savePlateCameraFile(*plate, o.out), o.out,
+                     "the pose section (the rest of the file is kept)"))
+    return cli::kExitFailure;
   if (!plate->probeYawDate.empty())
     spdlog::warn(
         "{}: the probe yaw was measured in the old world; run vemcalib plate probe-yaw "
@@ -84,20 +82,11 @@ void addPlatePoseCommand(CLI::App& plate, int& exitCode) {
       "pose", "Find the plate camera's pose from one image of a checkerboard on the floor");
   cmd->footer(kPlatePoseFooter);
   cmd->add_option("--image", o->image, "Image of the board on the floor")->required();
-  cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
-      ->required()
-      ->type_name("COLSxROWS")
-      ->check(help::quiet(boardSizeValidator()));
-  cmd->add_option("--square", o->squareMm, "Side of a square, mm")
-      ->required()
-      ->check(help::quiet(CLI::PositiveNumber));
+  addBoardOptions(cmd, o->board);
   cmd->add_option("--out", o->out, "Plate-camera file with the intrinsics, to update (TOML)")
       ->required();
-  cmd->add_option("--max-rms", o->maxRmsPx, "Largest RMS reprojection error accepted, pixels")
-      ->capture_default_str()
-      ->check(help::quiet(CLI::PositiveNumber));
-  cmd->add_option("--bits", o->bits, "Bits per code in 16-bit images (default: the camera's)")
-      ->check(CLI::IsMember({8, 10, 12, 16}));
+  addMaxRmsOption(cmd, o->maxRmsPx);
+  addBitsOption(cmd, o->bits, "Bits per code in 16-bit images (default: the camera's)");
   cmd->callback([o, &exitCode] { exitCode = runPlatePose(*o); });
 }
 

@@ -68,9 +68,9 @@ int runPlateProbeYaw(const PlateProbeYawOptions& o) {
              *yaw * kDegPerRad);
   plate->probeYawRad = *yaw;
   plate->probeYawDate = utcDateNow();
-  if (auto saved = calib::io::savePlateCameraFile(*plate, o.out); !saved)
-    return reportFailure(saved.error().message);
-  fmt::print("wrote {}: the probe section (the rest of the file is kept)\n", o.out);
+  if (!reportWritten(calib::io::savePlateCameraFile(*plate, o.out), o.out,
+                     "the probe section (the rest of the file is kept)"))
+    return cli::kExitFailure;
   return EXIT_SUCCESS;
 }
 

@@ -19,9 +19,9 @@
 #include "calib/io/camera_file.h"
 #include "camera_output.h"
 #include "commands.h"
-#include "util/cli_value_names.h"
 #include "frame_arguments.h"
 #include "mapio/map_file.h"
+#include "util/cli_value_names.h"
 
 namespace vem::calibtool {
 namespace {
@@ -144,12 +144,10 @@ int writeCalibration(const ResponseOptions& o, std::optional<calib::CameraCalibr
   calibration.photometric = photometric;
   calibration.photometricQuality = calib::PhotometricQuality{
       consistency.rmsPercent, consistency.maxPercent, 0.0, 0, 0, utcDateNow()};
-  if (auto saved = calib::io::saveCameraFile(calibration, o.out); !saved) {
-    return reportFailure(saved.error().message);
-  }
-  fmt::print("wrote {}: {}\n", o.out,
-             merging ? "the photometric section (the rest of the file is kept)"
-                     : "a new camera file (model and serial \"unknown\": edit them there)");
+  if (!reportWritten(calib::io::saveCameraFile(calibration, o.out), o.out,
+                     merging ? "the photometric section (the rest of the file is kept)"
+                             : "a new camera file (model and serial \"unknown\": edit them there)"))
+    return cli::kExitFailure;
   return EXIT_SUCCESS;
 }
 

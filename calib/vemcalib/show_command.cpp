@@ -24,32 +24,26 @@ struct ShowOptions {
   std::string truthPath;  // --compare
 };
 
-int runPlateShow(const ShowOptions& o) {
-  const auto plate = calib::io::loadPlateCameraFile(o.path);
-  if (!plate) return reportFailure(plate.error().message);
+// Loads the file at --path with `load` and prints it, or with --compare loads the truth the same
+// way and prints the two side by side; either file failing to load is its one error line.
+template <typename Load, typename Print, typename PrintComparison>
+int showFile(const ShowOptions& o, Load load, Print print, PrintComparison printComparison) {
+  const auto fitted = load(o.path);
+  if (!fitted) return reportFailure(fitted.error().message);
   if (o.truthPath.empty()) {
-    printPlateCamera(std::cout, *plate, o.path);
+    print(std::cout, *fitted, o.path);
   } else {
-    const auto truth = calib::io::loadPlateCameraFile(o.truthPath);
+    const auto truth = load(o.truthPath);
     if (!truth) return reportFailure("--compare: " + truth.error().message);
-    printPlateComparison(std::cout, *plate, o.path, *truth, o.truthPath);
+    printComparison(std::cout, *fitted, o.path, *truth, o.truthPath);
   }
   return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
 int runShow(const ShowOptions& o) {
   if (calib::io::calibFileKind(o.path) == calib::io::CalibFileKind::PlateCamera)
-    return runPlateShow(o);
-  const auto calibration = calib::io::loadCameraFile(o.path);
-  if (!calibration) return reportFailure(calibration.error().message);
-  if (o.truthPath.empty()) {
-    printCalibration(std::cout, *calibration, o.path);
-  } else {
-    const auto truth = calib::io::loadCameraFile(o.truthPath);
-    if (!truth) return reportFailure("--compare: " + truth.error().message);
-    printComparison(std::cout, *calibration, o.path, *truth, o.truthPath);
-  }
-  return std::cout.good() ? EXIT_SUCCESS : EXIT_FAILURE;
+    return showFile(o, calib::io::loadPlateCameraFile, printPlateCamera, printPlateComparison);
+  return showFile(o, calib::io::loadCameraFile, printCalibration, printComparison);
 }
 
 constexpr const char* kShowFooter = R"(Example:
@@ -70,7 +64,8 @@ world points seen by the truth land in the fitted image (pixels).)";
 
 void addShowCommand(CLI::App& app, int& exitCode) {
   auto o = std::make_shared<ShowOptions>();
-  CLI::App* cmd = app.add_subcommand("show", "Check a camera or plate-camera file and print what it holds");
+  CLI::App* cmd =
+      app.add_subcommand("show", "Check a camera or plate-camera file and print what it holds");
   cmd->footer(kShowFooter);
   cmd->add_option("CAMERA_FILE", o->path, "Camera file (TOML)")->required();
   cmd->add_option("--compare", o->truthPath,

@@ -21,18 +21,15 @@
 #include "calib/io/raw_frame_file.h"
 #include "camera_output.h"
 #include "commands.h"
-#include "util/cli_value_names.h"
 
 namespace vem::calibtool {
 namespace {
 
 namespace fs = std::filesystem;
 
-
 struct SimulateBoardsOptions {
   std::string camera;
-  std::string board;
-  double squareMm = 0.0;
+  BoardOptions board;
   int views = 12;
   std::uint64_t seed = 1;
   double noiseCode = 2.0;
@@ -49,10 +46,12 @@ std::expected<calib::CameraCalibration, std::string> loadTruth(const std::string
   return std::move(*truth);
 }
 
-// The white the board reflects, in cd/m2: kBoardWhiteCodeFraction up the code range on every channel.
+// The white the board reflects, in cd/m2: kBoardWhiteCodeFraction up the code range on every
+// channel.
 double whiteLuminance(const calib::CameraCalibration& truth, const calib::SimulationOptions& sim) {
   const calib::PhotometricCalibration& p = *truth.photometric;
-  const double code = p.blackLevelCode + kBoardWhiteCodeFraction * (p.saturationCode - p.blackLevelCode);
+  const double code =
+      p.blackLevelCode + kBoardWhiteCodeFraction * (p.saturationCode - p.blackLevelCode);
   double white = INFINITY;
   for (int c = 0; c < truth.camera.pixelFormat.channels; ++c)
     white = std::min(white, calib::luminanceFromCode(p, c, code, sim.exposureUs, sim.gain));
@@ -72,8 +71,8 @@ std::expected<std::vector<std::string>, std::string> writeViews(
   std::vector<std::string> files;
   for (std::size_t i = 0; i < poses.size(); ++i) {
     simulation.noise.seed = o.seed + i;
-    const RawFrame frame =
-        calib::simulateBoardView(board, poses[i], truth, simulation, white, white / kBoardPrintContrast);
+    const RawFrame frame = calib::simulateBoardView(board, poses[i], truth, simulation, white,
+                                                    white / kBoardPrintContrast);
     files.push_back((fs::path(o.out) / fmt::format("board-{:02}.png", i)).string());
     if (auto saved = calib::io::saveRawFrame(frame, files.back()); !saved)
       return std::unexpected(saved.error().message);
@@ -84,8 +83,7 @@ std::expected<std::vector<std::string>, std::string> writeViews(
 int runSimulateBoards(const SimulateBoardsOptions& o) {
   const auto truth = loadTruth(o.camera);
   if (!truth) return reportFailure(truth.error());
-  const auto [cols, rows] = *parseBoardSize(o.board);  // validated by CLI11
-  const calib::Checkerboard board{cols, rows, o.squareMm};
+  const calib::Checkerboard board = boardOf(o.board.size, o.board.squareMm);
   std::error_code error;
   fs::create_directories(o.out, error);
   if (error)
@@ -98,7 +96,7 @@ int runSimulateBoards(const SimulateBoardsOptions& o) {
              camera.sensorWidthPx, camera.sensorHeightPx, pixelFormatName(camera.pixelFormat),
              o.noiseCode);
   fmt::print("next: vemcalib fisheye --image {} --board {}x{} --square {:g} --fov {:g} --out {}\n",
-             fmt::join(*files, " "), cols, rows, o.squareMm,
+             fmt::join(*files, " "), board.innerCols, board.innerRows, board.squareMm,
              2.0 * truth->lens->maxThetaRad * 180.0 / std::numbers::pi,
              (fs::path(o.out) / "camera.toml").string());
   return EXIT_SUCCESS;
@@ -125,22 +123,8 @@ void addSimulateBoardsCommand(CLI::App& simulate, int& exitCode) {
   cmd->add_option("--camera", o->camera,
                   "Truth camera file (needs photometric and geometric sections)")
       ->required();
-  cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
-      ->required()
-      ->type_name("COLSxROWS")
-      ->check(help::quiet(boardSizeValidator()));
-  cmd->add_option("--square", o->squareMm, "Side of a square, mm")
-      ->required()
-      ->check(help::quiet(CLI::PositiveNumber));
-  cmd->add_option("--views", o->views, "Number of views")
-      ->capture_default_str()
-      ->type_name(help::rangeName(1, 100))
-      ->check(help::quiet(CLI::Range(1, 100)));
-  cmd->add_option("--seed", o->seed, "Random seed (the same seed gives the same views)")
-      ->capture_default_str();
-  cmd->add_option("--noise", o->noiseCode, "Read noise, codes (standard deviation)")
-      ->capture_default_str()
-      ->check(help::quiet(CLI::NonNegativeNumber));
+  addBoardOptions(cmd, o->board);
+  addSimulatedViewOptions(cmd, "Number of views", o->views, o->seed, o->noiseCode);
   cmd->add_option("--out", o->out, "Folder for board-NN.png")->required();
   cmd->callback([o, &exitCode] { exitCode = runSimulateBoards(*o); });
 }

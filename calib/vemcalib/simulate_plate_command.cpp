@@ -42,8 +42,7 @@ constexpr std::array<double, 6> kPatchLevels{0.05, 0.1, 0.2, 0.35, 0.6, 1.0};
 
 struct SimulatePlateOptions {
   std::string camera;
-  std::string board;
-  double squareMm = 0.0;
+  BoardOptions board;
   std::string floorBoard;      // default: --board
   double floorSquareMm = 0.0;  // default: --square
   int views = 12;
@@ -51,11 +50,6 @@ struct SimulatePlateOptions {
   double noiseCode = 1.0;
   std::string out;
 };
-
-calib::Checkerboard boardOf(const std::string& size, double squareMm) {
-  const auto [cols, rows] = *parseBoardSize(size);  // validated by CLI11
-  return {cols, rows, squareMm};
-}
 
 struct Simulation {
   const calib::PlateCamera& truth;
@@ -104,9 +98,10 @@ int runSimulatePlate(const SimulatePlateOptions& o) {
   fs::create_directories(o.out, error);
   if (error)
     return reportFailure(fmt::format("{}: cannot create the folder ({})", o.out, error.message()));
-  const calib::Checkerboard board = boardOf(o.board, o.squareMm);
-  const calib::Checkerboard floor = boardOf(o.floorBoard.empty() ? o.board : o.floorBoard,
-                                            o.floorSquareMm > 0.0 ? o.floorSquareMm : o.squareMm);
+  const calib::Checkerboard board = boardOf(o.board.size, o.board.squareMm);
+  const calib::Checkerboard floor =
+      boardOf(o.floorBoard.empty() ? o.board.size : o.floorBoard,
+              o.floorSquareMm > 0.0 ? o.floorSquareMm : o.board.squareMm);
   const calib::BoardPose floorPose = calib::floorBoardPose(*truth->pose);
   if (!calib::plateSeesWholeBoard(floor, floorPose, truth->intrinsics, kMaxFloorObliquityDeg))
     return reportFailure(
@@ -193,29 +188,14 @@ void addSimulatePlateCommand(CLI::App& simulate, int& exitCode) {
       "patches)");
   cmd->footer(kSimulatePlateFooter);
   cmd->add_option("--camera", o->camera, "Truth plate-camera file (needs a pose)")->required();
-  cmd->add_option("--board", o->board, "Inner corners per row and column: COLSxROWS, e.g. 9x6")
-      ->required()
-      ->type_name("COLSxROWS")
-      ->check(help::quiet(boardSizeValidator()));
-  cmd->add_option("--square", o->squareMm, "Side of a square, mm")
-      ->required()
-      ->check(help::quiet(CLI::PositiveNumber));
-  cmd->add_option("--floor-board", o->floorBoard,
-                  "The floor board's inner corners (default: --board)")
-      ->type_name("COLSxROWS")
-      ->check(help::quiet(boardSizeValidator()));
+  addBoardOptions(cmd, o->board);
+  addBoardSizeOption(cmd, "--floor-board", o->floorBoard,
+                     "The floor board's inner corners (default: --board)");
   cmd->add_option("--floor-square", o->floorSquareMm,
                   "Side of a square of the floor board, mm (default: --square)")
       ->check(help::quiet(CLI::PositiveNumber));
-  cmd->add_option("--views", o->views, "Number of views for the intrinsics")
-      ->capture_default_str()
-      ->type_name(help::rangeName(1, 100))
-      ->check(help::quiet(CLI::Range(1, 100)));
-  cmd->add_option("--seed", o->seed, "Random seed (the same seed gives the same views)")
-      ->capture_default_str();
-  cmd->add_option("--noise", o->noiseCode, "Read noise, codes (standard deviation)")
-      ->capture_default_str()
-      ->check(help::quiet(CLI::NonNegativeNumber));
+  addSimulatedViewOptions(cmd, "Number of views for the intrinsics", o->views, o->seed,
+                          o->noiseCode);
   cmd->add_option("--out", o->out, "Folder for the images and files")->required();
   cmd->callback([o, &exitCode] { exitCode = runSimulatePlate(*o); });
 }

@@ -125,10 +125,9 @@ std::expected<std::unique_ptr<PlateSource>, std::string> openStill(const std::st
     if (!image) return std::unexpected(image.error());
     std::ranges::fill(image->covered, std::uint8_t{1});
     PlateFrame frame{std::move(*image), false, 0.0, false, 1};
-    return std::make_unique<StillPlate>(
-        fmt::format("image {} ({} x {}, linear)", util::printable(source), frame.linear.widthPx,
-                    frame.linear.heightPx),
-        std::move(frame));
+    return stillPlate(fmt::format("image {} ({} x {}, linear)", util::printable(source),
+                                  frame.linear.widthPx, frame.linear.heightPx),
+                      std::move(frame));
   }
   cv::Mat picture;
   {
@@ -142,12 +141,16 @@ std::expected<std::unique_ptr<PlateSource>, std::string> openStill(const std::st
         util::printable(source)));
   }
   PlateFrame frame{linearFromPicture(picture), true, 0.0, false, 1};
-  return std::make_unique<StillPlate>(
+  return stillPlate(
       fmt::format("image {} ({} x {}, sRGB)", util::printable(source), picture.cols, picture.rows),
       std::move(frame));
 }
 
 }  // namespace
+
+std::unique_ptr<PlateSource> stillPlate(std::string description, PlateFrame frame) {
+  return std::make_unique<StillPlate>(std::move(description), std::move(frame));
+}
 
 std::expected<std::unique_ptr<PlateSource>, std::string> openPlateSource(
     const std::string& source) {

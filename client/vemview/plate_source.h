@@ -55,6 +55,9 @@ class PlateSource {
   [[nodiscard]] virtual bool ended() const { return false; }
 };
 
+// A still plate: `frame` every time (an image file's, the simulated plate's).
+[[nodiscard]] std::unique_ptr<PlateSource> stillPlate(std::string description, PlateFrame frame);
+
 // The source SOURCE names (above), opened and its first frame read; one sentence naming SOURCE
 // when it cannot be.
 [[nodiscard]] std::expected<std::unique_ptr<PlateSource>, std::string> openPlateSource(

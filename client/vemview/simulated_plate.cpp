@@ -9,23 +9,6 @@
 #include "client/embree/reference_renderer.h"
 
 namespace vem::view {
-namespace {
-
-class SimulatedPlate final : public PlateSource {
- public:
-  SimulatedPlate(std::string description, PlateFrame frame)
-      : description_(std::move(description)), frame_(std::move(frame)) {}
-  std::string description() const override { return description_; }
-  int widthPx() const override { return frame_.linear.widthPx; }
-  int heightPx() const override { return frame_.linear.heightPx; }
-  std::optional<PlateFrame> next() override { return frame_; }
-
- private:
-  std::string description_;
-  PlateFrame frame_;
-};
-
-}  // namespace
 
 std::expected<std::unique_ptr<PlateSource>, std::string> openSimulatedPlate(
     const scene::MixedRealityWorld& world, const EnvMap& map, int widthPx, int heightPx,
@@ -41,7 +24,7 @@ std::expected<std::unique_ptr<PlateSource>, std::string> openSimulatedPlate(
   std::ranges::fill(result.image.covered, std::uint8_t{1});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return std::make_unique<SimulatedPlate>(
+  return stillPlate(
       fmt::format("sim: {} by its plate camera ({} x {}, Monte Carlo to {:.1f} %, {:.1f} s)",
                   world.realSurfaces.name, widthPx, heightPx, 100.0 * result.relativeError,
                   seconds),

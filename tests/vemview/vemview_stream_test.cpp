@@ -2,10 +2,12 @@
 // synthetic sun), each new light frame is drawn with its shadow maps redrawn, and a glossy scene
 // subscribes to the cube maps while a Lambertian one does not.
 #include <chrono>
+#include <expected>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -26,6 +28,23 @@ using namespace std::chrono_literals;
 using vem::testing::CommandRun;
 using vem::testing::runCommand;
 
+// vemd in `dir` (a small camera, a 256 x 64 map, 64 lights) on a synthetic sky, streaming on a
+// free loopback port, with `pace` (--rate, --frames) added.
+std::expected<std::unique_ptr<vem::e2e::VemdProcess>, std::string> spawnVemd(
+    const fs::path& dir, const std::vector<std::string>& pace) {
+  std::ofstream(dir / "camera.toml") << vem::e2e::smallCameraToml();
+  std::ofstream(dir / "vemd.toml") << "version = 1\n[source]\ncamera = \""
+                                   << (dir / "camera.toml").string()
+                                   << "\"\n[processing]\nmap_width = 256\nmap_height = 64\n"
+                                      "lights = 64\n";
+  std::vector<std::string> args{"--config",       (dir / "vemd.toml").string(),
+                                "--source",       "synthetic:sky",
+                                "--stats-every",  "0",
+                                "--stream-listen", "127.0.0.1:0"};
+  args.insert(args.end(), pace.begin(), pace.end());
+  return vem::e2e::VemdProcess::spawn(VEMD_PATH, args);
+}
+
 class VemviewStream : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -33,13 +52,7 @@ class VemviewStream : public ::testing::Test {
            ("vemview_stream_" + std::to_string(::getpid()) + "_" +
             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
-    std::ofstream(dir_ / "camera.toml") << vem::e2e::smallCameraToml();
-    std::ofstream(dir_ / "vemd.toml")
-        << "version = 1\n[source]\ncamera = \"" << (dir_ / "camera.toml").string()
-        << "\"\n[processing]\nmap_width = 256\nmap_height = 64\nlights = 64\n";
-    auto vemd = vem::e2e::VemdProcess::spawn(
-        VEMD_PATH, {"--config", (dir_ / "vemd.toml").string(), "--source", "synthetic:sky",
-                    "--rate", "30", "--stats-every", "0", "--stream-listen", "127.0.0.1:0"});
+    auto vemd = spawnVemd(dir_, {"--rate", "30"});
     ASSERT_TRUE(vemd.has_value()) << vemd.error();
     vemd_ = std::move(*vemd);
     const auto port = vemd_->waitForPort(20s);
@@ -112,14 +125,7 @@ TEST(VemviewStreamPlate, LightsThatStopArrivingLeaveTheCompositeOnTheLastLights)
   const fs::path dir = fs::temp_directory_path() /
                        ("vemview_stream_plate_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  std::ofstream(dir / "camera.toml") << vem::e2e::smallCameraToml();
-  std::ofstream(dir / "vemd.toml")
-      << "version = 1\n[source]\ncamera = \"" << (dir / "camera.toml").string()
-      << "\"\n[processing]\nmap_width = 256\nmap_height = 64\nlights = 64\n";
-  auto vemd = vem::e2e::VemdProcess::spawn(
-      VEMD_PATH, {"--config", (dir / "vemd.toml").string(), "--source", "synthetic:sky",
-                  "--rate", "2", "--frames", "4", "--stats-every", "0", "--stream-listen",
-                  "127.0.0.1:0"});
+  auto vemd = spawnVemd(dir, {"--rate", "2", "--frames", "4"});
   ASSERT_TRUE(vemd.has_value()) << vemd.error();
   const auto port = (*vemd)->waitForPort(20s);
   ASSERT_TRUE(port.has_value()) << (*vemd)->stderrText();

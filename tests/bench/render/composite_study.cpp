@@ -120,6 +120,19 @@ struct Composited {
   double compositeMs = 0.0;
 };
 
+// The composite of `layers` into `plate` (a first frame: the albedo from this plate alone), timed,
+// and the objects pasted over it for comparison.
+void compositeInto(Composited& out, const render::LinearImage& plate,
+                   const render::DifferentialLayers& layers) {
+  const auto start = std::chrono::steady_clock::now();
+  render::AlbedoEstimate albedo;
+  const render::PlateColour colour;
+  albedo.update(plate, layers.withoutObjects, colour);
+  out.differential = render::compositeDifferential(plate, layers, albedo, colour);
+  out.compositeMs = msSince(start);
+  out.pasted = render::compositePasted(plate, layers, colour);
+}
+
 Composited compositeOnce(const LayerScenes& scenes, const scene::ViewCamera& camera,
                          const StudyImageSize& size, const render::ShadingLights& lights,
                          const render::LightingGeometry& geometry, const StudyMap& map,
@@ -139,13 +152,7 @@ Composited compositeOnce(const LayerScenes& scenes, const scene::ViewCamera& cam
       embree::renderWithLights(scenes.localOnly, camera, size.widthPx, size.heightPx, lights,
                                geometry, &map.cube, lightOptions);
   out.withoutMs = msSince(start);
-  start = std::chrono::steady_clock::now();
-  render::AlbedoEstimate albedo;
-  const render::PlateColour colour;
-  albedo.update(plate, layers.withoutObjects, colour);
-  out.differential = render::compositeDifferential(plate, layers, albedo, colour);
-  out.compositeMs = msSince(start);
-  out.pasted = render::compositePasted(plate, layers, colour);
+  compositeInto(out, plate, layers);
   return out;
 }
 
@@ -211,13 +218,7 @@ Composited compositeOnceGl(GlLayers& layers, const LayerScenes& scenes,
   (void)layers.localOnly->render(camera, soft, &map.cube, version, ratio);
   rendered.withoutObjects = layers.localOnly->readLinear();
   out.withoutMs = msSince(start);
-  start = std::chrono::steady_clock::now();
-  render::AlbedoEstimate albedo;
-  const render::PlateColour colour;
-  albedo.update(plate, rendered.withoutObjects, colour);
-  out.differential = render::compositeDifferential(plate, rendered, albedo, colour);
-  out.compositeMs = msSince(start);
-  out.pasted = render::compositePasted(plate, rendered, colour);
+  compositeInto(out, plate, rendered);
   return out;
 }
 
