@@ -59,6 +59,15 @@ void storeInPlateUnits(LinearImage& out, std::size_t pixel, glm::vec3 radiance,
   out.covered[pixel] = 1;
 }
 
+// `rest` blended with the objects' radiance by the share of pixel i they cover, where an object's
+// edge crosses it; `rest` itself elsewhere.
+glm::vec3 withObjectEdge(const DifferentialLayers& layers, std::size_t i, glm::vec3 rest) {
+  if (layers.objectCover.empty()) return rest;
+  const float cover = layers.objectCover[i];
+  if (!(cover > 0.0F && cover < 1.0F)) return rest;
+  return cover * rgbAt(layers.objectRadiance, i) + (1.0F - cover) * rest;
+}
+
 void expectColour(const PlateColour& colour) {
   VEM_EXPECTS(colour.gainRgb.x > 0.0F && colour.gainRgb.y > 0.0F && colour.gainRgb.z > 0.0F);
   VEM_EXPECTS(std::isfinite(colour.gainRgb.x) && std::isfinite(colour.gainRgb.y) &&
@@ -68,6 +77,8 @@ void expectColour(const PlateColour& colour) {
 void expectLayers(const LinearImage& plate, const DifferentialLayers& layers) {
   VEM_EXPECTS(sameSize(plate, layers.withObjects) && sameSize(plate, layers.withoutObjects));
   VEM_EXPECTS(layers.classes.size() == plate.pixelCount());
+  VEM_EXPECTS(layers.objectCover.empty() || (layers.objectCover.size() == plate.pixelCount() &&
+                                             sameSize(plate, layers.objectRadiance)));
 }
 
 // f(first, last) over ranges of pixels on TBB's threads (each pixel is its own: the result does
@@ -166,7 +177,7 @@ LinearImage compositeDifferential(const LinearImage& plate, const DifferentialLa
                 albedo.at(i) * (rgbAt(layers.withObjects, i) - rgbAt(layers.withoutObjects, i));
         ++counted.localPixels;
       }
-      storeInPlateUnits(out, i, value, colour);
+      storeInPlateUnits(out, i, withObjectEdge(layers, i, value), colour);
     }
   });
   if (stats != nullptr) {
@@ -184,6 +195,8 @@ LinearImage compositePasted(const LinearImage& plate, const DifferentialLayers& 
                             const PlateColour& colour) {
   VEM_EXPECTS(sameSize(plate, layers.withObjects));
   VEM_EXPECTS(layers.classes.size() == plate.pixelCount());
+  VEM_EXPECTS(layers.objectCover.empty() || (layers.objectCover.size() == plate.pixelCount() &&
+                                             sameSize(plate, layers.objectRadiance)));
   expectColour(colour);
   LinearImage out = LinearImage::black(plate.widthPx, plate.heightPx);
   forPixelRanges(plate.pixelCount(), [&](std::size_t first, std::size_t last) {
@@ -192,7 +205,7 @@ LinearImage compositePasted(const LinearImage& plate, const DifferentialLayers& 
       const glm::vec3 value = layers.classes[i] == SurfaceClass::Object
                                   ? rgbAt(layers.withObjects, i)
                                   : plateRadiance(plate, i, colour, &nonFinite);
-      storeInPlateUnits(out, i, value, colour);
+      storeInPlateUnits(out, i, withObjectEdge(layers, i, value), colour);
     }
   });
   return out;

@@ -10,6 +10,8 @@
 //   object pixel:      composite = withObjects                     (the object hides the plate)
 //   local pixel:       composite = plate + albedo (withObjects - withoutObjects)
 //   background pixel:  composite = plate
+//   a pixel an object's edge crosses (resampled layers): cover x the object's radiance + (1 -
+//   cover) x the rest of the pixel as above
 // with albedo the local surface's diffuse albedo estimated from the plate itself, nobody types it
 // in: albedo = plate / withoutObjects, clamped to [0, 1] (a plate darker than the render gives 0,
 // never a negative or NaN albedo; a saturated plate gives a lower bound, clamped at 1), averaged
@@ -41,6 +43,12 @@ struct DifferentialLayers {
   LinearImage withObjects;
   LinearImage withoutObjects;
   std::vector<SurfaceClass> classes;  // per pixel, of withObjects
+  // Resampled layers only (layer_resampling.h), where an object's edge crosses a pixel: the
+  // share of the pixel the objects cover (0 to 1) and their radiance there. At such a pixel
+  // withObjects, withoutObjects and classes hold the rest of the pixel (the local surface or the
+  // background), and the composite blends the two by the share. Empty: no pixel is shared.
+  std::vector<float> objectCover;
+  LinearImage objectRadiance;
 };
 
 struct PlateColour {

@@ -73,6 +73,8 @@ DifferentialLayers resampledLayers(const DifferentialLayers& rendered, int plate
   out.withObjects = LinearImage::black(plateWidthPx, plateHeightPx);
   if (withWithout) out.withoutObjects = LinearImage::black(plateWidthPx, plateHeightPx);
   out.classes.assign(out.withObjects.pixelCount(), SurfaceClass::Background);
+  out.objectCover.assign(out.withObjects.pixelCount(), 0.0F);
+  out.objectRadiance = LinearImage::black(plateWidthPx, plateHeightPx);
   // Rows in parallel on TBB's threads; each pixel is written once, so the result does not depend
   // on the schedule.
   tbb::parallel_for(
@@ -84,13 +86,39 @@ DifferentialLayers resampledLayers(const DifferentialLayers& rendered, int plate
                                      ? scaledRenderPx(x, y, plateWidthPx, plateHeightPx, w, h)
                                      : renderPxOfPlatePx[i];
             const std::size_t n = nearest(w, h, at);
-            const Taps taps = tapsAt(w, h, at);
-            out.classes[i] = rendered.classes[n];
+            Taps taps = tapsAt(w, h, at);
+            // Where an object's edge crosses the pixel: the objects' share and radiance apart,
+            // and the rest of the pixel from the other taps alone.
+            Taps objectTaps = taps;
+            float cover = 0.0F;
+            std::size_t rest = n;
+            for (int k = 0; k < 4; ++k) {
+              const std::size_t tap = taps.offset[k] / 3;
+              const bool object = rendered.classes[tap] == SurfaceClass::Object;
+              cover += object ? taps.weight[k] : 0.0F;
+              objectTaps.weight[k] = object ? taps.weight[k] : 0.0F;
+            }
+            if (cover > 1e-4F && cover < 1.0F - 1e-4F) {
+              float restWeight = 0.0F;
+              for (int k = 0; k < 4; ++k) {
+                const std::size_t tap = taps.offset[k] / 3;
+                const bool object = rendered.classes[tap] == SurfaceClass::Object;
+                objectTaps.weight[k] /= cover;
+                taps.weight[k] = object ? 0.0F : taps.weight[k] / (1.0F - cover);
+                if (!object && taps.weight[k] > restWeight) {
+                  restWeight = taps.weight[k];
+                  rest = tap;  // the other taps' heaviest names the rest of the pixel
+                }
+              }
+              readInto(rendered.withObjects, objectTaps, &out.objectRadiance.rgb[3 * i]);
+              out.objectCover[i] = cover;
+            }
+            out.classes[i] = rendered.classes[rest];
             readInto(rendered.withObjects, taps, &out.withObjects.rgb[3 * i]);
-            out.withObjects.covered[i] = rendered.withObjects.covered[n];
+            out.withObjects.covered[i] = rendered.withObjects.covered[rest];
             if (withWithout) {
               readInto(rendered.withoutObjects, taps, &out.withoutObjects.rgb[3 * i]);
-              out.withoutObjects.covered[i] = rendered.withoutObjects.covered[n];
+              out.withoutObjects.covered[i] = rendered.withoutObjects.covered[rest];
             }
           }
         }

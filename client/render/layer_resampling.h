@@ -6,9 +6,13 @@
 // renderPxOfPlatePx[i] is where plate pixel i's centre lands in the render, in render pixels
 // (centres at +0.5, as the renderers'); the caller builds it once per plate camera and size (from
 // the lens's undistortion). Empty: the plate is the render scaled, no lens distortion.
-// Radiance is bilinear (edge pixels clamp; a position outside the render reads the nearest edge);
-// the surface class is the nearest pixel's. An empty withoutObjects (no differential pass) stays
-// empty.
+// Radiance is bilinear (edge pixels clamp; a position outside the render reads the nearest edge).
+// Where an object's edge crosses a plate pixel (its four taps are neither all objects' nor all
+// not), the objects' share of the taps' weight becomes objectCover and their radiance
+// objectRadiance, and the layers and the class hold the other taps alone; elsewhere the class is
+// the nearest render pixel's. So an object's edge does not step at a plate larger than the render,
+// and the floor's shading does not bleed into the object's or back. An empty withoutObjects (no
+// differential pass) stays empty.
 #pragma once
 
 #include <span>

@@ -20,18 +20,39 @@ DifferentialLayers twoPixels() {
   return layers;
 }
 
-TEST(LayerResampling, LargerPlateTakesEachPixelsNearestClassAndBlendsRadianceAcrossTheEdge) {
+TEST(LayerResampling, LargerPlateTakesEachPixelsClassAndRadianceFromItsTaps) {
   const DifferentialLayers out = resampledLayers(twoPixels(), 4, 2, {});
   ASSERT_EQ(out.withObjects.widthPx, 4);
   ASSERT_EQ(out.classes.size(), 8U);
   EXPECT_EQ(out.classes[0], SurfaceClass::Object);
-  EXPECT_EQ(out.classes[1], SurfaceClass::Object);
   EXPECT_EQ(out.classes[2], SurfaceClass::Local);
   EXPECT_EQ(out.classes[7], SurfaceClass::Local);
   EXPECT_FLOAT_EQ(out.withObjects.at(0, 0).x, 4.0F);  // clamped at the edge
-  EXPECT_FLOAT_EQ(out.withObjects.at(1, 0).x, 3.5F);  // a quarter of the way to the right pixel
+  EXPECT_FLOAT_EQ(out.objectCover[0], 0.0F);          // all its taps are the object's
   EXPECT_FLOAT_EQ(out.withObjects.at(3, 1).x, 2.0F);
   EXPECT_FLOAT_EQ(out.withoutObjects.at(2, 1).x, 2.0F);
+}
+
+// Plate pixel 1 sits a quarter of the way from the object's render pixel to the floor's. The
+// nearest class made the object's edge step at twice the render's size, and blending the taps
+// across the edge put the floor's radiance into the object's (3.5 for 4).
+TEST(LayerResampling, EdgePixelKeepsTheObjectsShareApartSoNeitherSideBleedsIntoTheOther) {
+  const DifferentialLayers out = resampledLayers(twoPixels(), 4, 2, {});
+  EXPECT_FLOAT_EQ(out.objectCover[1], 0.75F);
+  EXPECT_FLOAT_EQ(out.objectRadiance.at(1, 0).x, 4.0F);
+  EXPECT_EQ(out.classes[1], SurfaceClass::Local);  // the rest of the pixel: the floor
+  EXPECT_FLOAT_EQ(out.withObjects.at(1, 0).x, 2.0F);
+  EXPECT_FLOAT_EQ(out.withoutObjects.at(1, 0).x, 2.0F);
+  // Composited: three quarters object, one quarter floor (here the plate, unshadowed).
+  LinearImage plate = LinearImage::black(4, 2);
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 4; ++x) plate.set(x, y, glm::vec3(1.0F), true);
+  }
+  AlbedoEstimate albedo;
+  albedo.update(plate, out.withoutObjects, PlateColour{});
+  const LinearImage composite = compositeDifferential(plate, out, albedo, PlateColour{});
+  EXPECT_FLOAT_EQ(composite.at(1, 0).x, 0.75F * 4.0F + 0.25F * 1.0F);
+  EXPECT_FLOAT_EQ(compositePasted(plate, out, PlateColour{}).at(1, 0).x, 3.25F);
 }
 
 TEST(LayerResampling, LensTableSendsEachPlatePixelWhereItsUndistortedRayLands) {
