@@ -236,7 +236,7 @@ Error decodeStatus(const pb::Status& in, Status& out) {
   out = {in.source(),         sourceState(in.state()), in.frame_rate_hz(),    in.frames_processed(),
          in.frames_dropped(), in.frames_refused(),     in.latency_median_ms(), in.calibration_id(),
          in.clients(),        in.skipped_for_you(),    in.light_count(),      in.clustering(),
-         in.filter(),         in.recording()};
+         in.filter(),         in.recording(),          in.offline(),          in.publish_dropped()};
   if (Error e = checkNonNegative(in.frame_rate_hz(), "frame_rate_hz")) return e;
   return checkFinite(in.latency_median_ms(), "latency_median_ms");
 }

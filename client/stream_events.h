@@ -92,6 +92,8 @@ struct Status {
   bool clustering = false;
   std::string filter;
   bool recording = false;
+  bool offline = false;              // MQTT: the camera's vemd is gone (its will or its goodbye)
+  std::uint64_t publishDropped = 0;  // MQTT: messages vemd's publisher dropped
 };
 
 struct ControlReply {

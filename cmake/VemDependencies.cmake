@@ -21,6 +21,7 @@ add_compile_definitions(BOOST_BEAST_USE_STD_STRING_VIEW)
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)   # libzstd-dev: recorded pixels
 pkg_check_modules(ISAL REQUIRED IMPORTED_TARGET libisal)   # libisal-dev: fast CRC32C of records
 pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)  # libsystemd-dev: vemd's sd_notify
+pkg_check_modules(MOSQUITTO REQUIRED IMPORTED_TARGET libmosquitto)  # libmosquitto-dev: MQTT (vemd publishes, clients subscribe)
 
 # liquid-dsp (libliquid-dev) ships a static library and a header, without CMake or pkg-config files.
 find_path(LIQUID_INCLUDE_DIR liquid/liquid.h REQUIRED)

@@ -9,6 +9,7 @@ packages=(
   libspdlog-dev libliquid-dev libtomlplusplus-dev
   libprotobuf-dev protobuf-compiler libboost-dev libzstd-dev libisal-dev libssl-dev
   libsystemd-dev
+  libmosquitto-dev mosquitto      # MQTT: vemd publishes through a broker; tests start their own on loopback
   libaravis-dev libusb-1.0-0-dev aravis-tools libcamera-dev v4l-utils iproute2 util-linux openssl
   libembree-dev libglfw3-dev libepoxy-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri libegl-mesa0
   libtinyobjloader-dev libtinygltf-dev xvfb xauth librsvg2-bin

@@ -11,7 +11,7 @@
 namespace vem::stream {
 
 inline constexpr std::uint32_t kProtocolMajor = 1;
-inline constexpr std::uint32_t kProtocolMinor = 0;
+inline constexpr std::uint32_t kProtocolMinor = 1;
 
 inline constexpr std::uint32_t kMaxLights = 65536;
 inline constexpr std::uint64_t kMaxClientMessageBytes = 64 * 1024;

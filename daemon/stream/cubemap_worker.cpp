@@ -21,7 +21,7 @@ SharedBytes shared(ServerMessage message) {
 
 }  // namespace
 
-CubemapWorker::CubemapWorker(StreamServer& server, CubemapWorkerOptions options)
+CubemapWorker::CubemapWorker(Publisher& server, CubemapWorkerOptions options)
     : server_(server), options_(options), thread_([this] { run(); }) {}
 
 CubemapWorker::~CubemapWorker() {

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "core/env_map.h"
-#include "stream/stream_server.h"
+#include "stream/publisher.h"
 #include "stream/subscription.h"
 
 namespace vem::stream {
@@ -43,7 +43,7 @@ struct CubemapWorkerCounters {
 
 class CubemapWorker {
  public:
-  CubemapWorker(StreamServer& server, CubemapWorkerOptions options);
+  CubemapWorker(Publisher& server, CubemapWorkerOptions options);
   ~CubemapWorker();
   CubemapWorker(const CubemapWorker&) = delete;
   CubemapWorker& operator=(const CubemapWorker&) = delete;
@@ -67,7 +67,7 @@ class CubemapWorker {
   void run();
   void build(const Job& job);
 
-  StreamServer& server_;
+  Publisher& server_;
   CubemapWorkerOptions options_;
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;

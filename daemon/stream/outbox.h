@@ -20,9 +20,9 @@
 #include <memory>
 #include <string>
 
-namespace vem::stream {
+#include "stream/shared_bytes.h"
 
-using SharedBytes = std::shared_ptr<const std::string>;
+namespace vem::stream {
 
 class Outbox {
  public:

@@ -33,7 +33,7 @@ SourceState sourceState(const LoopCounters& counters, std::int64_t nowNs) {
 
 }  // namespace
 
-StreamControl::StreamControl(StreamServer& server, StreamSink& sink, RecordingSwitch* recorder,
+StreamControl::StreamControl(Publisher& server, StreamSink& sink, RecordingSwitch* recorder,
                              StreamIdentity identity, std::int64_t statusEveryNs)
     : server_(server),
       sink_(sink),

@@ -16,8 +16,8 @@
 #include <string>
 
 #include "frames/loop_control.h"
+#include "stream/publisher.h"
 #include "stream/recording_switch.h"
-#include "stream/stream_server.h"
 #include "stream/stream_sink.h"
 
 namespace vem::stream {
@@ -30,7 +30,7 @@ struct StreamIdentity {
 class StreamControl final : public LoopControl {
  public:
   // `recorder` may be null (no recording by control: start_recording is refused).
-  StreamControl(StreamServer& server, StreamSink& sink, RecordingSwitch* recorder,
+  StreamControl(Publisher& server, StreamSink& sink, RecordingSwitch* recorder,
                 StreamIdentity identity, std::int64_t statusEveryNs = 1'000'000'000);
 
   void betweenFrames(PipelineControl& pipeline, const LoopCounters& counters) override;
@@ -45,7 +45,7 @@ class StreamControl final : public LoopControl {
   void publishStatus(const PipelineControl& pipeline, const LoopCounters& counters,
                      std::int64_t nowNs);
 
-  StreamServer& server_;
+  Publisher& server_;
   StreamSink& sink_;
   RecordingSwitch* recorder_;
   StreamIdentity identity_;

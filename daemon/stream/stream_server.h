@@ -42,6 +42,7 @@
 #include "proto/vem_stream.pb.h"
 #include "stream/cubemap_demand.h"
 #include "stream/outbox.h"
+#include "stream/publisher.h"
 #include "stream/subscription.h"
 
 namespace vem::stream {
@@ -67,12 +68,6 @@ struct StreamServerOptions {
   Hello hello;  // server, source, calibration_id, max_lights; the rest is set per connection
 };
 
-struct PendingControl {
-  std::uint64_t connection = 0;
-  std::uint64_t requestId = 0;
-  Control command;
-};
-
 struct ServerCounters {
   std::size_t clients = 0;                // open WebSocket connections now
   std::size_t handshakes = 0;             // connections in their opening handshake now
@@ -92,14 +87,14 @@ struct ServerCounters {
   std::uint64_t lightsSkipped = 0;        // over all connections, closed ones included
 };
 
-class StreamServer {
+class StreamServer final : public Publisher {
  public:
   // Binds and starts listening; one sentence when the address, the port, the TLS files or the
   // descriptor limit (maxClients + maxHandshakes sockets) fail. Raises the soft RLIMIT_NOFILE to
   // the hard one (at most 65536).
   [[nodiscard]] static std::expected<std::unique_ptr<StreamServer>, std::string> start(
       StreamServerOptions options);
-  ~StreamServer();
+  ~StreamServer() override;
   StreamServer(const StreamServer&) = delete;
   StreamServer& operator=(const StreamServer&) = delete;
 
@@ -110,15 +105,15 @@ class StreamServer {
 
   // --- any thread (the processing thread); none of these waits for a client ---
   // A serialized ServerMessage with a LightFrame, for connections subscribed to lights.
-  void publishLights(SharedBytes message);
+  void publishLights(SharedBytes message) override;
   // A serialized environment frame of `variant`, for connections subscribed to it whose rate
   // allows one now.
-  void publishEnvironment(const CubeVariant& variant, SharedBytes message);
+  void publishEnvironment(const CubeVariant& variant, SharedBytes message) override;
   // A status for every connection; clients and skipped_for_you are filled in per connection.
-  void publishStatus(const Status& status);
-  [[nodiscard]] CubemapDemand cubemapDemand() const;
-  [[nodiscard]] std::vector<PendingControl> takeControls();
-  void reply(std::uint64_t connection, const ControlReply& reply);
+  void publishStatus(const Status& status) override;
+  [[nodiscard]] CubemapDemand cubemapDemand() const override;
+  [[nodiscard]] std::vector<PendingControl> takeControls() override;
+  void reply(std::uint64_t connection, const ControlReply& reply) override;
   [[nodiscard]] ServerCounters counters() const;
 
   class Impl;

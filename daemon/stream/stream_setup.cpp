@@ -1,14 +1,11 @@
 #include "stream/stream_setup.h"
 
-#include <sys/stat.h>
-
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "core/default_pattern.h"
+#include "util/owner_only_file.h"
 #include "util/printable.h"
 
 namespace vem::stream {
@@ -17,23 +14,9 @@ namespace fs = std::filesystem;
 
 std::expected<std::string, std::string> readTokenFile(const fs::path& path) {
   const std::string name = util::printable(path.string());
-  struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) {
-    return std::unexpected(fmt::format("stream.token_file: {}: cannot read it", name));
-  }
-  if ((info.st_mode & (S_IRWXG | S_IRWXO)) != 0) {
-    return std::unexpected(fmt::format(
-        "stream.token_file: {} can be read by group or others (mode {:o}); allow its owner only "
-        "(chmod 600)",
-        name, info.st_mode & 07777));
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) {
-    return std::unexpected(fmt::format("stream.token_file: {}: cannot read it", name));
-  }
-  std::string token = text.str();
+  auto text = util::readOwnerOnlyFile(path, "stream.token_file");
+  if (!text) return std::unexpected(text.error());
+  std::string token = std::move(*text);
   const auto first = token.find_first_not_of(" \t\r\n");
   if (first == std::string::npos) {
     return std::unexpected(fmt::format("stream.token_file: {} is empty", name));

@@ -21,7 +21,7 @@ SharedBytes shared(ServerMessage message) {
 
 }  // namespace
 
-StreamSink::StreamSink(StreamServer& server, StreamSinkOptions options)
+StreamSink::StreamSink(Publisher& server, StreamSinkOptions options)
     : server_(server),
       options_(options),
       windowStartNs_(monotonicNowNs()),

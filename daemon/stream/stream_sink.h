@@ -20,7 +20,7 @@
 
 #include "frames/sink.h"
 #include "stream/cubemap_worker.h"
-#include "stream/stream_server.h"
+#include "stream/publisher.h"
 #include "stream/subscription.h"
 
 namespace vem::stream {
@@ -44,11 +44,12 @@ struct SinkWindow {
 
 class StreamSink final : public Sink {
  public:
-  StreamSink(StreamServer& server, StreamSinkOptions options);
+  StreamSink(Publisher& server, StreamSinkOptions options);
 
   [[nodiscard]] std::string name() const override { return "stream"; }
   [[nodiscard]] std::expected<void, SinkFailure> consume(const ProcessedFrame& frame) override;
   [[nodiscard]] std::expected<void, SinkFailure> close() override { return {}; }
+  [[nodiscard]] std::string note() const override { return server_.note(); }
 
   void setStamp(const ProcessingStamp& stamp) { stamp_ = stamp; }
   [[nodiscard]] SinkWindow takeWindow(std::int64_t nowMonotonicNs);
@@ -64,7 +65,7 @@ class StreamSink final : public Sink {
  private:
   void publishCubemaps(const ProcessedFrame& frame, std::int64_t nowNs);
 
-  StreamServer& server_;
+  Publisher& server_;
   StreamSinkOptions options_;
   ProcessingStamp stamp_;
   std::map<CubeVariant, std::int64_t> nextCubemapDueNs_;

@@ -14,8 +14,8 @@ namespace {
 constexpr std::size_t kLoggedMessageBytes = 1024;
 }  // namespace
 
-CaptureThread::CaptureThread(FrameSource& source, FrameQueue<CapturedFrame>& frames,
-                             FrameQueue<CapturedFrame>& spares, const CaptureOptions& options)
+CaptureThread::CaptureThread(FrameSource& source, util::DropOldestQueue<CapturedFrame>& frames,
+                             util::DropOldestQueue<CapturedFrame>& spares, const CaptureOptions& options)
     : source_(source),
       frames_(frames),
       spares_(spares),

@@ -1,7 +1,7 @@
 // CaptureThread: vemd's capture side, on a thread of its own: source.next() into the frame
 // queue, and nothing else, so that processing and sinks can never hold it up (daemon_loop.h).
 //
-// - Frames go into `frames` with FrameQueue::push (drop-oldest), or pushOrWait when `lossless`
+// - Frames go into `frames` with DropOldestQueue::push (drop-oldest), or pushOrWait when `lossless`
 //   (a source without a pace of its own). Frames the daemon is done with come back through
 //   `spares` and are handed to source.recycle(), on this thread.
 // - Source errors: EndOfStream ends the thread; other causes are retried after a backoff that
@@ -22,7 +22,7 @@
 #include "frames/captured_frame.h"
 #include "frames/frame_source.h"
 #include "util/backoff.h"
-#include "vemd/frame_queue.h"
+#include "util/drop_oldest_queue.h"
 #include "vemd/pacer.h"
 
 namespace vem::vemd {
@@ -36,8 +36,8 @@ struct CaptureOptions {
 
 class CaptureThread {
  public:
-  CaptureThread(FrameSource& source, FrameQueue<CapturedFrame>& frames,
-                FrameQueue<CapturedFrame>& spares, const CaptureOptions& options);
+  CaptureThread(FrameSource& source, util::DropOldestQueue<CapturedFrame>& frames,
+                util::DropOldestQueue<CapturedFrame>& spares, const CaptureOptions& options);
   ~CaptureThread();
   CaptureThread(const CaptureThread&) = delete;
   CaptureThread& operator=(const CaptureThread&) = delete;
@@ -60,8 +60,8 @@ class CaptureThread {
   void recycleSpares();
 
   FrameSource& source_;
-  FrameQueue<CapturedFrame>& frames_;
-  FrameQueue<CapturedFrame>& spares_;
+  util::DropOldestQueue<CapturedFrame>& frames_;
+  util::DropOldestQueue<CapturedFrame>& spares_;
   CaptureOptions options_;
   Pacer backoffWait_;
   std::atomic<bool> stop_{false};

@@ -70,6 +70,22 @@ toml::table streamTable(const StreamConfig& s) {
                      {"record_dir", s.recordDir}};
 }
 
+toml::table mqttTable(const stream::MqttSettings& m) {
+  return toml::table{{"url", m.url},
+                     {"prefix", m.prefix},
+                     {"camera_id", m.cameraId},
+                     {"credentials_file", m.credentialsFile},
+                     {"tls_ca", m.tlsCa},
+                     {"tls_cert", m.tlsCert},
+                     {"tls_key", m.tlsKey},
+                     {"keep_alive_s", m.keepAliveS},
+                     {"queue_messages", m.queueMessages},
+                     {"max_in_flight", m.maxInFlight},
+                     {"cubemap_rate_hz", m.cubemapRateHz},
+                     {"cubemap_face_px", m.cubemapFacePx},
+                     {"cubemap_levels", m.cubemapLevels}};
+}
+
 }  // namespace
 
 toml::table configTable(const VemdConfig& c) {
@@ -91,6 +107,7 @@ toml::table configTable(const VemdConfig& c) {
   t.insert("stats", toml::table{{"every_s", c.stats.everyS}});
   t.insert("log", toml::table{{"level", c.log.level}, {"format", c.log.format}});
   t.insert("stream", streamTable(c.stream));
+  t.insert("mqtt", mqttTable(c.mqtt));
   return t;
 }
 

@@ -8,7 +8,7 @@
 
 #include "util/printable.h"
 #include "vemd/capture_thread.h"
-#include "vemd/frame_queue.h"
+#include "util/drop_oldest_queue.h"
 #include "vemd/rate_watch.h"
 
 namespace vem::vemd {
@@ -43,7 +43,7 @@ class ProcessingLoop {
     if (source.paced && source.nominalRateHz > 0.0) rateWatch_.emplace(source.nominalRateHz);
   }
 
-  StopReason run(FrameQueue<CapturedFrame>& frames, FrameQueue<CapturedFrame>& spares,
+  StopReason run(util::DropOldestQueue<CapturedFrame>& frames, util::DropOldestQueue<CapturedFrame>& spares,
                  const CaptureThread& capture, const std::atomic<bool>& stopRequested) {
     applyControl(frames.counters(), capture);
     for (;;) {
@@ -73,7 +73,7 @@ class ProcessingLoop {
     if (stats_.processed() == 1) observer_.firstFrameProcessed();
   }
 
-  LoopResult finish(StopReason reason, const QueueCounters& queue, std::uint64_t sourceErrors) {
+  LoopResult finish(StopReason reason, const util::QueueCounters& queue, std::uint64_t sourceErrors) {
     std::vector<std::string> notes = sinks_.notes();  // before the sinks are closed
     for (const DroppedSink& failed : sinks_.closeAll()) {
       spdlog::error("sink {}: {}", failed.name, util::printable(failed.message, 1024));
@@ -101,7 +101,7 @@ class ProcessingLoop {
         .count();
   }
 
-  void applyControl(const QueueCounters& queue, const CaptureThread& capture) {
+  void applyControl(const util::QueueCounters& queue, const CaptureThread& capture) {
     if (control_ == nullptr) return;
     control_->betweenFrames(
         pipeline_, {stats_.processed(), queue.dropped, refusedTotal_, capture.sourceErrors(),
@@ -128,7 +128,7 @@ class ProcessingLoop {
 
   // A paced source below its nominal rate (rate_watch.h), logged once per change of state; a
   // source that fails is reported as such, and its window starts again when frames flow.
-  void watchRate(const QueueCounters& queue, const CaptureThread& capture) {
+  void watchRate(const util::QueueCounters& queue, const CaptureThread& capture) {
     if (!rateWatch_) return;
     if (capture.failure()) return rateWatch_->restart();
     const auto change = rateWatch_->observe(monotonicNowNs(), queue.pushed);
@@ -147,7 +147,7 @@ class ProcessingLoop {
     }
   }
 
-  void reportIfDue(const QueueCounters& queue, std::uint64_t sourceErrors) {
+  void reportIfDue(const util::QueueCounters& queue, std::uint64_t sourceErrors) {
     if (options_.reportEveryS <= 0.0) return;
     const std::int64_t now = monotonicNowNs();
     if (now < nextReportNs_) return;
@@ -183,8 +183,8 @@ LoopResult runDaemonLoop(FrameSource& source, Pipeline& pipeline, SinkSet& sinks
   NullObserver none;
   LoopObserver& watcher = observer != nullptr ? *observer : none;
   const SourceDescription description = source.describe();
-  FrameQueue<CapturedFrame> frames(options.queueDepth);
-  FrameQueue<CapturedFrame> spares(options.queueDepth + 2);
+  util::DropOldestQueue<CapturedFrame> frames(options.queueDepth);
+  util::DropOldestQueue<CapturedFrame> spares(options.queueDepth + 2);
   ProcessingLoop processing(pipeline, sinks, options, description, watcher, control);
   CaptureThread capture(
       source, frames, spares,

@@ -1,7 +1,7 @@
 // The daemon's two threads and what joins them:
 //
-//   capture thread:    source.next() --> FrameQueue (bounded, drops the oldest when full)
-//   processing thread: FrameQueue --> pipeline.process() --> sinks --> statistics
+//   capture thread:    source.next() --> DropOldestQueue (bounded, drops the oldest when full)
+//   processing thread: DropOldestQueue --> pipeline.process() --> sinks --> statistics
 //
 // - The capture thread never waits for processing or sinks: when processing falls behind, the
 //   queue drops the oldest waiting frame and counts it. The one exception is a source without a

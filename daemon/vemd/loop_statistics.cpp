@@ -63,7 +63,7 @@ void LoopStatistics::frameProcessed(const ProcessedFrame& frame, double sinksMic
   add(total_, frame, sinksMicros, lightsOutNs, liveClock);
 }
 
-LoopReport LoopStatistics::takeWindow(std::int64_t nowNs, const QueueCounters& queue,
+LoopReport LoopStatistics::takeWindow(std::int64_t nowNs, const util::QueueCounters& queue,
                                       std::uint64_t sourceErrors) {
   LoopReport report = std::move(window_);
   report.elapsedS = double(nowNs - windowStartNs_) * 1e-9;
@@ -77,7 +77,7 @@ LoopReport LoopStatistics::takeWindow(std::int64_t nowNs, const QueueCounters& q
   return report;
 }
 
-LoopReport LoopStatistics::totals(std::int64_t nowNs, const QueueCounters& queue,
+LoopReport LoopStatistics::totals(std::int64_t nowNs, const util::QueueCounters& queue,
                                   std::uint64_t sourceErrors) const {
   LoopReport report = total_;
   report.elapsedS = double(nowNs - startNs_) * 1e-9;

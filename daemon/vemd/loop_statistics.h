@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "frames/processed_frame.h"
-#include "vemd/frame_queue.h"
+#include "util/drop_oldest_queue.h"
 
 namespace vem::vemd {
 
@@ -72,10 +72,10 @@ class LoopStatistics {
 
   // The window since the last call (or the start), then a new window begins at nowNs.
   // `queue` and `sourceErrors` are the running totals; the window gets their increase.
-  [[nodiscard]] LoopReport takeWindow(std::int64_t nowNs, const QueueCounters& queue,
+  [[nodiscard]] LoopReport takeWindow(std::int64_t nowNs, const util::QueueCounters& queue,
                                       std::uint64_t sourceErrors);
   // The whole run so far.
-  [[nodiscard]] LoopReport totals(std::int64_t nowNs, const QueueCounters& queue,
+  [[nodiscard]] LoopReport totals(std::int64_t nowNs, const util::QueueCounters& queue,
                                   std::uint64_t sourceErrors) const;
 
   [[nodiscard]] std::uint64_t processed() const { return total_.processed; }
@@ -86,7 +86,7 @@ class LoopStatistics {
 
   std::int64_t startNs_;
   std::int64_t windowStartNs_;
-  QueueCounters windowStartQueue_;
+  util::QueueCounters windowStartQueue_;
   std::uint64_t windowStartSourceErrors_ = 0;
   LoopReport window_;
   LoopReport total_;

@@ -1,4 +1,4 @@
-// Streaming in vemd: from vemd's configuration ([stream], and [output] for recordings and
+// Streaming in vemd: from vemd's configuration ([stream], [mqtt], and [output] for recordings and
 // allow_missing) to a listening StreamServer (stream/stream_setup.h), the StreamSink and the
 // RecordingSwitch (which records through vemd's recorder, sinks/recorder_sink.h) that join
 // vemd's sinks, and the StreamControl the loop calls between frames. vemd is the one place that
@@ -19,6 +19,8 @@
 #include "frames/frame_source.h"
 #include "frames/sink.h"
 #include "recording/recording_writer.h"
+#include "stream/mqtt_publisher.h"
+#include "stream/publisher_fan_out.h"
 #include "stream/recording_switch.h"
 #include "stream/stream_control.h"
 #include "stream/stream_server.h"
@@ -36,13 +38,17 @@ namespace vem::vemd {
 [[nodiscard]] stream::OpenRecording recorderOpener(RecordingContext context,
                                                    recording::WriterOptions options);
 
+// Members in the order they may be destroyed (last first): the control borrows the publishers.
 struct Streaming {
-  std::unique_ptr<stream::StreamServer> server;    // null: streaming is off
-  std::unique_ptr<stream::StreamControl> control;  // null with it
+  std::unique_ptr<stream::StreamServer> server;        // null: no WebSocket server
+  std::unique_ptr<stream::MqttPublisher> mqtt;         // null: no broker
+  std::unique_ptr<stream::PublisherFanOut> both;       // with the two: what the sink feeds
+  std::unique_ptr<stream::StreamControl> control;      // null when neither runs
 };
 
-// Starts the server and appends its sinks to `sinks`; an empty Streaming when disabled, or when
-// the port cannot be bound and output.allow_missing is set (logged).
+// Starts the server and the MQTT publisher and appends their sinks to `sinks`; an empty Streaming
+// when both are off, or when the port cannot be bound and output.allow_missing is set (logged).
+// A broker that cannot be reached is no error: the publisher keeps trying (mqtt_publisher.h).
 [[nodiscard]] std::expected<Streaming, std::string> startStreaming(
     const VemdConfig& config, const SourceDescription& source,
     std::vector<std::unique_ptr<Sink>>& sinks);

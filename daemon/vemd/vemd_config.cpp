@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "util/cli_conventions.h"
+#include "util/mqtt_url.h"
 #include "util/toml_reader.h"
 
 #include "core/default_pattern.h"
@@ -50,7 +51,8 @@ constexpr const char* kRateExpected =
 // The keys of each section, in the order config/vemd.toml documents them.
 constexpr std::string_view kTopKeys[] = {"version",    "source", "camera",     "bracketing",
                                          "processing", "filter", "clustering", "output",
-                                         "stats",      "log",    "stream"};
+                                         "stats",      "log",    "stream",
+                                         "mqtt"};
 constexpr std::string_view kSourceKeys[] = {
     "spec",         "rate",   "loop",       "frames", "queue_depth", "retry_initial_ms",
     "retry_max_ms", "camera", "noise_code", "seed"};
@@ -88,6 +90,10 @@ constexpr std::string_view kStreamKeys[] = {"enabled",
                                             "send_buffer_bytes",
                                             "cubemap_max_face_px",
                                             "cubemap_max_rate_hz"};
+constexpr std::string_view kMqttKeys[] = {
+    "url",     "prefix",     "camera_id",      "credentials_file", "tls_ca",
+    "tls_cert", "tls_key",   "keep_alive_s",   "queue_messages",   "max_in_flight",
+    "cubemap_rate_hz", "cubemap_face_px", "cubemap_levels"};
 constexpr const char* kListenExpected =
     "\"IPV4:PORT\" or \"[IPV6]:PORT\" (an IP address, port 0 to 65535), or \"\" (no server)";
 
@@ -268,6 +274,39 @@ void readStream(util::TomlReader r, StreamConfig& s) {
   }
 }
 
+void readMqtt(util::TomlReader r, stream::MqttSettings& m) {
+  r.onlyKeys(kMqttKeys, util::UnknownKeyWords::KeyOrSection);
+  r.optionalText("url", m.url);
+  if (!m.url.empty()) {
+    if (auto url = util::parseMqttUrl(m.url); !url) {
+      r.failExpected("url", "mqtt://[USER@]HOST[:PORT][/PREFIX[/CAMERA]], mqtts://..., or \"\"",
+                     url.error());
+    }
+  }
+  r.optionalText("prefix", m.prefix);
+  if (std::string p = util::topicLevelProblem(m.prefix); !p.empty()) {
+    r.failExpected("prefix", "one topic level", p);
+  }
+  r.optionalText("camera_id", m.cameraId);
+  if (std::string p = util::topicLevelProblem(m.cameraId); !m.cameraId.empty() && !p.empty()) {
+    r.failExpected("camera_id", "one topic level, or \"\" (the host name)", p);
+  }
+  r.optionalText("credentials_file", m.credentialsFile);
+  r.optionalText("tls_ca", m.tlsCa);
+  r.optionalText("tls_cert", m.tlsCert);
+  r.optionalText("tls_key", m.tlsKey);
+  if (m.tlsCert.empty() != m.tlsKey.empty()) {
+    r.failExpected(m.tlsCert.empty() ? "tls_cert" : "tls_key",
+                   "both mqtt.tls_cert and mqtt.tls_key (PEM files), or neither", "only one");
+  }
+  r.optionalWholeNumber("keep_alive_s", 5, 3600, m.keepAliveS);
+  r.optionalWholeNumber("queue_messages", 1, 4096, m.queueMessages);
+  r.optionalWholeNumber("max_in_flight", 1, 1024, m.maxInFlight);
+  r.optionalNumber("cubemap_rate_hz", 0.0, 60.0, m.cubemapRateHz);
+  r.optionalWholeNumber("cubemap_face_px", 8, 512, m.cubemapFacePx);
+  r.optionalWholeNumber("cubemap_levels", 1, 8, m.cubemapLevels);
+}
+
 // The section `name` of the document, or an empty table when it is absent; a failure when it is
 // not a table.
 const toml::table& section(const toml::table& document, std::string_view name,
@@ -332,7 +371,7 @@ CLI::Validator rateCheck() {
 }
 
 struct Flags {
-  std::optional<std::string> config, source, rate, out, record, jsonl, camera, streamListen;
+  std::optional<std::string> config, source, rate, out, record, jsonl, camera, streamListen, mqtt;
   std::optional<std::string> logLevel, logFormat;
   std::optional<std::uint64_t> frames;
   std::optional<std::size_t> lights;
@@ -384,6 +423,17 @@ void addFlags(CLI::App& app, Flags& f) {
       ->type_name("N")
       ->default_str("0")
       ->check(wholeNumberCheck(0, kMaxEvery));
+  app.add_option("--mqtt", f.mqtt,
+                 "Publish through an MQTT broker too: mqtt://[USER@]HOST[:PORT][/PREFIX[/CAMERA]] "
+                 "or mqtts://... (\"\": none; [mqtt] sets the rest)")
+      ->type_name("URL")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            if (text.empty()) return {};
+            auto url = util::parseMqttUrl(text);
+            return url ? std::string() : url.error();
+          },
+          ""));
   app.add_option("--stream-listen", f.streamListen,
                  "Stream to render clients on IP:PORT (\"\": no server; port 0: any)")
       ->type_name("ADDR")
@@ -439,6 +489,7 @@ void applyFlags(const Flags& f, VemdConfig& c) {
   if (f.previewNumbered) c.output.previewNumbered = true;
   if (f.statsEvery) c.stats.everyS = *f.statsEvery;
   if (f.streamListen) c.stream.listen = *f.streamListen;
+  if (f.mqtt) c.mqtt.url = *f.mqtt;
   if (f.allowMissingOutputs) c.output.allowMissing = true;
   if (f.logLevel) c.log.level = *f.logLevel;
   if (f.quiet) c.log.level = "warn";
@@ -499,7 +550,8 @@ const std::vector<ConfigSection>& configSchema() {
                                       {"output", list(kOutputKeys)},
                                       {"stats", list(kStatsKeys)},
                                       {"log", list(kLogKeys)},
-                                      {"stream", list(kStreamKeys)}};
+                                      {"stream", list(kStreamKeys)},
+                                      {"mqtt", list(kMqttKeys)}};
   }();
   return schema;
 }
@@ -525,6 +577,7 @@ std::expected<VemdConfig, std::string> parseConfig(const std::string& text,
   readStats({section(*document, "stats", top), "stats.", status}, config.stats);
   readLog({section(*document, "log", top), "log.", status}, config.log);
   readStream({section(*document, "stream", top), "stream.", status}, config.stream);
+  readMqtt({section(*document, "mqtt", top), "mqtt.", status}, config.mqtt);
   if (!status.ok()) return std::unexpected(status.failure->message);
   return config;
 }

@@ -2,13 +2,13 @@
 // its default) and the command line, which overrides the file.
 //
 // File: TOML, sections [source], [camera], [bracketing], [processing], [filter], [clustering],
-// [output], [stats], [log], [stream]; every
+// [output], [stats], [log], [stream], [mqtt]; every
 // key is optional (the built-in default applies), a key or section that is not listed is refused,
 // and so is a value of the wrong type or out of range, in one sentence:
 //   "vemd.toml: processing.lights: expected a whole number from 1 to 65536, found 0".
 // Flags: --config FILE, --source SPEC, --frames N, --rate recorded|max|HZ, --loop, --lights N,
 // --cluster Q (0: off), --out DIR, --record FILE, --jsonl FILE, --preview-every N (0: off),
-// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR, --allow-missing-outputs,
+// --stats-every S, --camera FILE, --list-devices, --stream-listen ADDR, --mqtt URL, --allow-missing-outputs,
 // --log-level L, --quiet, --log-format F, --print-config (prints the merged configuration as
 // TOML and exits 0: config_toml.h); a bad flag value is refused
 // the same way ("--lights: expected ...").
@@ -24,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "stream/mqtt_settings.h"
 #include "stream/stream_settings.h"
 #include "vemd/pipeline.h"
 #include "vemd/source_rate.h"
@@ -113,6 +114,7 @@ struct VemdConfig {
   StatsConfig stats;
   LogConfig log;
   StreamConfig stream;
+  stream::MqttSettings mqtt;  // [mqtt] (--mqtt URL): the stream through a broker
   bool listDevices = false;  // --list-devices (command line only): list the cameras and exit
   friend bool operator==(const VemdConfig&, const VemdConfig&) = default;
 };

@@ -129,13 +129,13 @@ TEST(FrameEncoding, ClusteringOfAnotherSetIsLeftOutRatherThanMisattributed) {
   EXPECT_FALSE(lightFrameMessage(f.frame, stamp()).lights().has_clusters());
 }
 
-TEST(FrameEncoding, SerializeStampsProtocolVersionOneZero) {
+TEST(FrameEncoding, SerializeStampsThisBuildsProtocolVersion) {
   Fixture f;
   const std::string bytes = serialize(lightFrameMessage(f.frame, stamp()));
   ServerMessage parsed;
   ASSERT_TRUE(parsed.ParseFromString(bytes));
   EXPECT_EQ(parsed.protocol_major(), 1U);
-  EXPECT_EQ(parsed.protocol_minor(), 0U);
+  EXPECT_EQ(parsed.protocol_minor(), 1U);
   EXPECT_EQ(parsed.protocol_major(), kProtocolMajor);
   ASSERT_TRUE(parsed.has_lights());
   EXPECT_EQ(parsed.lights().ids_size(), 3);

@@ -97,7 +97,7 @@ TEST(VemdConfig, MisspeltSectionIsRefused) {
   EXPECT_EQ(refusal("[proccessing]\nlights = 64\n"),
             "vemd.toml: proccessing: unknown section (expected one of: version, source, camera, "
             "bracketing, "
-            "processing, filter, clustering, output, stats, log, stream)");
+            "processing, filter, clustering, output, stats, log, stream, mqtt)");
 }
 
 TEST(VemdConfig, OutOfRangeValueIsRefusedWithExpectedAndFound) {

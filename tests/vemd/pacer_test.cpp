@@ -106,7 +106,7 @@ TEST(LoopStatistics, WindowReportsOnlyWhatHappenedSinceTheLastReport) {
   LoopStatistics stats(0);
   const CapturedFrame a{{}, 0, 0, 1'000'000};
   stats.frameProcessed(timedFrame(a, 100.0), 10.0, 3'000'000, false);
-  QueueCounters queue{5, 1, 4, 0, 2};
+  util::QueueCounters queue{5, 1, 4, 0, 2};
   const LoopReport first = stats.takeWindow(1'000'000'000, queue, 2);
   EXPECT_EQ(first.processed, 1u);
   EXPECT_EQ(first.framesIn, 5u);

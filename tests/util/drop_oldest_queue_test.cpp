@@ -1,6 +1,6 @@
-// FrameQueue: drop-oldest when full, exact counts, close() semantics, and a producer/consumer
+// DropOldestQueue: drop-oldest when full, exact counts, close() semantics, and a producer/consumer
 // stress run for ThreadSanitizer (VEM_TSAN builds).
-#include "vemd/frame_queue.h"
+#include "util/drop_oldest_queue.h"
 
 #include <atomic>
 #include <chrono>
@@ -13,11 +13,11 @@
 
 namespace {
 
-using vem::vemd::FrameQueue;
+using vem::util::DropOldestQueue;
 using namespace std::chrono_literals;
 
-TEST(FrameQueue, FullQueueDropsTheOldestNotTheNewest) {
-  FrameQueue<int> queue(3);
+TEST(DropOldestQueue, FullQueueDropsTheOldestNotTheNewest) {
+  DropOldestQueue<int> queue(3);
   for (int i = 0; i < 5; ++i) (void)queue.push(i);
   queue.close();
   std::vector<int> got;
@@ -25,8 +25,8 @@ TEST(FrameQueue, FullQueueDropsTheOldestNotTheNewest) {
   EXPECT_EQ(got, (std::vector<int>{2, 3, 4}));
 }
 
-TEST(FrameQueue, PushHandsBackTheEvictedItemForReuse) {
-  FrameQueue<int> queue(2);
+TEST(DropOldestQueue, PushHandsBackTheEvictedItemForReuse) {
+  DropOldestQueue<int> queue(2);
   EXPECT_FALSE(queue.push(10).has_value());
   EXPECT_FALSE(queue.push(11).has_value());
   const auto evicted = queue.push(12);
@@ -34,8 +34,8 @@ TEST(FrameQueue, PushHandsBackTheEvictedItemForReuse) {
   EXPECT_EQ(*evicted, 10);
 }
 
-TEST(FrameQueue, EveryDropIsCountedAndPushedEqualsPoppedPlusDroppedPlusWaiting) {
-  FrameQueue<int> queue(4);
+TEST(DropOldestQueue, EveryDropIsCountedAndPushedEqualsPoppedPlusDroppedPlusWaiting) {
+  DropOldestQueue<int> queue(4);
   for (int i = 0; i < 10; ++i) (void)queue.push(i);
   (void)queue.popFor(0ns);
   const auto c = queue.counters();
@@ -47,16 +47,16 @@ TEST(FrameQueue, EveryDropIsCountedAndPushedEqualsPoppedPlusDroppedPlusWaiting) 
   EXPECT_EQ(c.pushed, c.popped + c.dropped + c.depth);
 }
 
-TEST(FrameQueue, NothingIsDroppedWhileThereIsRoom) {
-  FrameQueue<int> queue(4);
+TEST(DropOldestQueue, NothingIsDroppedWhileThereIsRoom) {
+  DropOldestQueue<int> queue(4);
   for (int i = 0; i < 4; ++i) (void)queue.push(i);
   EXPECT_EQ(queue.counters().dropped, 0u);
 }
 
 // A consumer waiting for an item must return as soon as the queue closes, not at its timeout
 // (30 s here; the test gives up waiting after 10 s, so a missing wake-up fails, never hangs).
-TEST(FrameQueue, CloseWakesAWaitingConsumer) {
-  FrameQueue<int> queue(2);
+TEST(DropOldestQueue, CloseWakesAWaitingConsumer) {
+  DropOldestQueue<int> queue(2);
   std::mutex mutex;
   std::condition_variable done;
   bool returned = false;
@@ -81,8 +81,8 @@ TEST(FrameQueue, CloseWakesAWaitingConsumer) {
   EXPECT_TRUE(queue.finished());
 }
 
-TEST(FrameQueue, CloseStillDeliversWhatIsQueuedThenEnds) {
-  FrameQueue<int> queue(3);
+TEST(DropOldestQueue, CloseStillDeliversWhatIsQueuedThenEnds) {
+  DropOldestQueue<int> queue(3);
   (void)queue.push(1);
   (void)queue.push(2);
   queue.close();
@@ -93,22 +93,22 @@ TEST(FrameQueue, CloseStillDeliversWhatIsQueuedThenEnds) {
   EXPECT_TRUE(queue.finished());
 }
 
-TEST(FrameQueue, PushAfterCloseIsRefusedAndHandsTheItemBack) {
-  FrameQueue<int> queue(3);
+TEST(DropOldestQueue, PushAfterCloseIsRefusedAndHandsTheItemBack) {
+  DropOldestQueue<int> queue(3);
   queue.close();
   EXPECT_EQ(queue.push(7), 7);
   EXPECT_EQ(queue.pushOrWait(8), 8);
   EXPECT_EQ(queue.counters().pushed, 0u);
 }
 
-TEST(FrameQueue, PopForTimesOutOnAnOpenEmptyQueueWithoutEndingIt) {
-  FrameQueue<int> queue(1);
+TEST(DropOldestQueue, PopForTimesOutOnAnOpenEmptyQueueWithoutEndingIt) {
+  DropOldestQueue<int> queue(1);
   EXPECT_EQ(queue.popFor(1ms), std::nullopt);
   EXPECT_FALSE(queue.finished());
 }
 
-TEST(FrameQueue, PushOrWaitWaitsForRoomInsteadOfDropping) {
-  FrameQueue<int> queue(1);
+TEST(DropOldestQueue, PushOrWaitWaitsForRoomInsteadOfDropping) {
+  DropOldestQueue<int> queue(1);
   constexpr int kItems = 200;
   std::thread producer([&] {
     for (int i = 0; i < kItems; ++i) EXPECT_FALSE(queue.pushOrWait(i).has_value());
@@ -124,8 +124,8 @@ TEST(FrameQueue, PushOrWaitWaitsForRoomInsteadOfDropping) {
 
 // A producer waiting for room must return (its item handed back) when the queue closes. If
 // close() failed to wake it, the test frees a slot after 10 s so the thread can end, and fails.
-TEST(FrameQueue, CloseWakesAProducerWaitingForRoom) {
-  FrameQueue<int> queue(1);
+TEST(DropOldestQueue, CloseWakesAProducerWaitingForRoom) {
+  DropOldestQueue<int> queue(1);
   (void)queue.push(1);
   std::mutex mutex;
   std::condition_variable done;
@@ -153,8 +153,8 @@ TEST(FrameQueue, CloseWakesAProducerWaitingForRoom) {
 
 // Many items through a small queue from a fast producer to a slower consumer: items arrive in
 // order, none twice, and the counts add up (a data race here is what TSan reports).
-TEST(FrameQueue, ConcurrentProducerAndConsumerKeepOrderAndExactCounts) {
-  FrameQueue<int> queue(4);
+TEST(DropOldestQueue, ConcurrentProducerAndConsumerKeepOrderAndExactCounts) {
+  DropOldestQueue<int> queue(4);
   constexpr int kItems = 20000;
   std::thread producer([&] {
     for (int i = 0; i < kItems; ++i) (void)queue.push(i);

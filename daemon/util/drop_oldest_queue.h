@@ -1,5 +1,6 @@
-// FrameQueue: the bounded queue between vemd's capture thread (producer) and its processing
-// thread (consumer). When it is full, push() drops the OLDEST item to make room and counts the
+// DropOldestQueue: a bounded queue between a producer that keeps its own pace and a consumer: vemd's
+// capture thread and its processing thread, or the processing thread and the MQTT sender
+// (stream/mqtt_publisher.h). When it is full, push() drops the OLDEST item to make room and counts the
 // drop, so the producer never waits for the consumer: a camera keeps its pace whatever the
 // processing or the sinks do, and the consumer always gets the freshest frames.
 //
@@ -22,7 +23,7 @@
 
 #include "util/contract.h"
 
-namespace vem::vemd {
+namespace vem::util {
 
 struct QueueCounters {
   std::uint64_t pushed = 0;   // items accepted (dropped ones included)
@@ -33,12 +34,12 @@ struct QueueCounters {
 };
 
 template <typename T>
-class FrameQueue {
+class DropOldestQueue {
  public:
-  explicit FrameQueue(std::size_t capacity) : capacity_(capacity) { VEM_EXPECTS(capacity >= 1); }
+  explicit DropOldestQueue(std::size_t capacity) : capacity_(capacity) { VEM_EXPECTS(capacity >= 1); }
 
-  FrameQueue(const FrameQueue&) = delete;
-  FrameQueue& operator=(const FrameQueue&) = delete;
+  DropOldestQueue(const DropOldestQueue&) = delete;
+  DropOldestQueue& operator=(const DropOldestQueue&) = delete;
 
   // Queues `item`, evicting the oldest item when full. Returns what left the producer's hands
   // unqueued, so its storage can be reused: the evicted item, or `item` itself once the queue is
@@ -140,4 +141,4 @@ class FrameQueue {
   bool closed_ = false;
 };
 
-}  // namespace vem::vemd
+}  // namespace vem::util
