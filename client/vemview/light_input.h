@@ -22,6 +22,8 @@
 #include "core/env_map.h"
 #include "core/light.h"
 
+#include "util/mosquitto_client.h"
+
 namespace vem::view {
 
 struct InputFrame {
@@ -69,6 +71,7 @@ struct MapInputOptions {
 struct StreamInputOptions {
   std::string url;
   std::string token;
+  util::MqttSecurity security;  // MQTT credentials, and the CA file for wss and mqtts
   bool cubeMap = false;
   double cubeMapRateHz = 2.0;
   std::uint32_t cubeFacePx = 128;

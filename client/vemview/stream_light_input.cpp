@@ -66,6 +66,11 @@ std::expected<std::unique_ptr<LightInput>, std::string> openStreamInput(
   client::StreamClientOptions clientOptions;
   clientOptions.url = options.url;
   clientOptions.token = options.token;
+  clientOptions.username = options.security.username;
+  clientOptions.password = options.security.password;
+  clientOptions.caFile = options.security.caFile;
+  clientOptions.certFile = options.security.certFile;
+  clientOptions.keyFile = options.security.keyFile;
   clientOptions.subscription.lights = true;
   if (options.cubeMap) {
     clientOptions.subscription.cubemapRateHz = options.cubeMapRateHz;

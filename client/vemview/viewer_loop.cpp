@@ -37,8 +37,10 @@ double msSince(Clock::time_point start) {
 std::expected<std::unique_ptr<LightInput>, std::string> openInput(const ViewerOptions& o,
                                                                   bool cubeMap, int cubeFacePx) {
   if (!o.connectUrl.empty()) {
-    return openStreamInput(StreamInputOptions{o.connectUrl, o.token, cubeMap, 2.0,
-                                              std::uint32_t(cubeFacePx)});
+    auto security = client::readMqttSecurity(o.mqtt);
+    if (!security) return std::unexpected(security.error());
+    return openStreamInput(StreamInputOptions{o.connectUrl, o.token, std::move(*security), cubeMap,
+                                              2.0, std::uint32_t(cubeFacePx)});
   }
   if (!o.lightFile.empty()) {
     return openLightFileInput(o.lightFile);

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "client/mqtt_url.h"
 #include "util/cli_conventions.h"
 
 namespace vem::view {
@@ -46,9 +47,14 @@ CLI::Validator positiveNumber() {
 }
 
 void addInputOptions(CLI::App& app, ViewerOptions& o) {
-  auto* connect = app.add_option("--connect", o.connectUrl,
-                                 "Take lights (and cube maps) from vemd's stream, ws://HOST:PORT");
-  app.add_option("--token", o.token, "Bearer token for the stream");
+  auto* connect = app.add_option(
+      "--connect", o.connectUrl,
+      "Take lights (and cube maps) from vemd's stream: ws[s]://HOST:PORT, or through an MQTT "
+      "broker mqtt[s]://[USER@]HOST[:PORT]/PREFIX/CAMERA");
+  app.add_option("--token", o.token, "Bearer token for the stream (ws, wss)");
+  client::addMqttCliOptions(app, o.mqtt,
+                            "wss, mqtts: trust the CA certificates of this PEM file instead of "
+                            "the system's");
   auto* lights = app.add_option(
       "--lights", o.lightFile, "Take lights from a JSON-lines file (vemd --jsonl, vemtool lights)");
   auto* map = app.add_option("--map", o.mapFile,
@@ -243,7 +249,8 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
       "Examples:\n"
       "  vemview --map ../shared/data/hdri/esplanade.exr                  # a window\n"
       "  vemview --headless --lights out/lights.jsonl --frames 1 --out out/render\n"
-      "  vemview --connect ws://127.0.0.1:8765 --scene model.gltf --count 512 --shadowed 128");
+      "  vemview --connect ws://127.0.0.1:8765 --scene model.gltf --count 512 --shadowed 128\n"
+      "  vemview --connect mqtt://viewer@broker/vemcast/stage --password-file viewer.pass");
   cli::applyConventions(app, "vemview");  // plain help, the exit statuses, one error line
   try {
     app.parse(argc, argv);
@@ -261,6 +268,11 @@ std::expected<ViewerOptions, int> parseViewerOptions(int argc, char** argv) {
              app.count("--plate-sync-ms") > 0) {
     std::cerr << "vemview: error: --plate-camera, --local-scene, --place and --video composite "
                  "into a plate: give --plate SOURCE too\n";
+    return std::unexpected(cli::kExitUsage);
+  }
+  if (!client::isMqttUrl(o.connectUrl) && client::anyMqttOnlyOption(o.mqtt)) {
+    std::cerr << "vemview: error: --username, --password-file, --cert and --key are for an "
+                 "MQTT broker: give --connect mqtt://... or mqtts://...\n";
     return std::unexpected(cli::kExitUsage);
   }
   if (o.renderer == RendererKind::Reference && (!o.connectUrl.empty() || !o.lightFile.empty())) {

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "client/mqtt_cli_options.h"
+
 namespace vem::view {
 
 enum class RendererKind { Gl, Embree, Reference };
@@ -27,6 +29,7 @@ struct ViewerOptions {
   // Input: exactly one of these (none: the map of kDefaultMap from the shared data).
   std::string connectUrl;
   std::string token;
+  client::MqttCliOptions mqtt;  // --username, --password-file, --ca-file, --cert, --key
   std::string lightFile;
   std::string mapFile;
   std::string scene = "default";   // a file (.obj, .gltf, .glb) or a built-in scene name

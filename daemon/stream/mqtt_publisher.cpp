@@ -27,6 +27,7 @@
 #include "stream/thread_niceness.h"
 #include "util/backoff.h"
 #include "util/drop_oldest_queue.h"
+#include "util/mosquitto_client.h"
 #include "util/mqtt_url.h"
 #include "util/printable.h"
 
@@ -56,11 +57,6 @@ struct ReplyRoute {
   std::string correlation;
 };
 
-void initLibraryOnce() {
-  static std::once_flag once;
-  std::call_once(once, [] { mosquitto_lib_init(); });
-}
-
 }  // namespace
 
 class MqttPublisher::Impl {
@@ -73,7 +69,8 @@ class MqttPublisher::Impl {
   // ---- configuration
   MqttPublisherOptions options;
   std::string base;  // "PREFIX/CAMERA/"
-  mosquitto* client = nullptr;
+  util::MosquittoPtr handle;
+  mosquitto* client = nullptr;  // handle's
   SharedBytes helloBytes;
   std::string offlineBytes;  // the will's payload
 
@@ -137,7 +134,7 @@ class MqttPublisher::Impl {
   void onConnect(int reasonCode) {
     if (reasonCode != 0) {
       noteProblem(fmt::format("the MQTT broker {}:{} refused vemd: {}", options.host, options.port,
-                              mosquitto_reason_string(reasonCode)));
+                              util::brokerReasonText(reasonCode)));
       std::lock_guard lock(mutex);
       ++counters.connectFailures;
       return;
@@ -174,8 +171,8 @@ class MqttPublisher::Impl {
       if (stopping) return;
       ++counters.connectFailures;
     }
-    const std::string why = reasonCode == 0 ? std::string("closed")
-                                            : std::string(mosquitto_strerror(reasonCode));
+    const std::string why =
+        reasonCode == 0 ? std::string("closed") : util::mosquittoFailureText(reasonCode, errno, "");
     noteProblem(wasConnected ? fmt::format("the connection to the MQTT broker {}:{} was lost ({})",
                                            options.host, options.port, why)
                              : fmt::format("cannot reach the MQTT broker {}:{} ({})", options.host,
@@ -303,8 +300,7 @@ class MqttPublisher::Impl {
       if (rc != MOSQ_ERR_SUCCESS) {
         noteProblem(fmt::format("cannot reach the MQTT broker {}:{}: {}", options.host,
                                 options.port,
-                                rc == MOSQ_ERR_ERRNO ? std::strerror(errno)
-                                                     : mosquitto_strerror(rc)));
+                                util::mosquittoFailureText(rc, errno, "")));
       }
       const std::chrono::milliseconds delay = backoff.next();
       std::unique_lock lock(mutex);
@@ -386,19 +382,20 @@ std::expected<std::unique_ptr<MqttPublisher>, std::string> MqttPublisher::start(
     return std::unexpected(std::string(
         "mqtt.tls_ca / tls_cert: TLS files were given for a broker without TLS; use mqtts://"));
   }
-  initLibraryOnce();
   if (options.clientId.empty()) options.clientId = "vemd-" + options.cameraId;
   auto impl = std::make_unique<Impl>(std::move(options));
   Impl& i = *impl;
   const MqttPublisherOptions& o = i.options;
-  i.client = mosquitto_new(o.clientId.c_str(), true, &i);
-  if (i.client == nullptr) return std::unexpected(std::string("mqtt: cannot create the client"));
-  const auto fail = [&i](const std::string& what, int rc) {
-    mosquitto_destroy(i.client);
-    i.client = nullptr;
-    return std::unexpected(fmt::format("{}: {}", what, mosquitto_strerror(rc)));
-  };
-  mosquitto_int_option(i.client, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V5);
+  util::MqttUrl broker;
+  broker.tls = o.tls;
+  broker.host = o.host;
+  broker.port = o.port;
+  auto created = util::newMosquittoClient(
+      broker, util::MqttSecurity{o.username, o.password, o.caFile, o.certFile, o.keyFile}, &i,
+      o.clientId);
+  if (!created) return std::unexpected("mqtt: " + created.error());
+  i.handle = std::move(created->handle);
+  i.client = i.handle.get();
   mosquitto_threaded_set(i.client, true);  // the sender thread publishes beside the network's
 
   Hello hello = o.hello;
@@ -417,23 +414,7 @@ std::expected<std::unique_ptr<MqttPublisher>, std::string> MqttPublisher::start(
   if (int rc = mosquitto_will_set_v5(i.client, statusTopic.c_str(), int(i.offlineBytes.size()),
                                      i.offlineBytes.data(), 1, true, nullptr);
       rc != MOSQ_ERR_SUCCESS) {
-    return fail("mqtt: cannot set the will", rc);
-  }
-  if (!o.username.empty()) {
-    if (int rc = mosquitto_username_pw_set(i.client, o.username.c_str(),
-                                           o.password.empty() ? nullptr : o.password.c_str());
-        rc != MOSQ_ERR_SUCCESS) {
-      return fail("mqtt: cannot set the credentials", rc);
-    }
-  }
-  if (o.tls) {
-    const char* caPath = o.caFile.empty() ? "/etc/ssl/certs" : nullptr;
-    if (int rc = mosquitto_tls_set(i.client, o.caFile.empty() ? nullptr : o.caFile.c_str(), caPath,
-                                   o.certFile.empty() ? nullptr : o.certFile.c_str(),
-                                   o.keyFile.empty() ? nullptr : o.keyFile.c_str(), nullptr);
-        rc != MOSQ_ERR_SUCCESS) {
-      return fail("mqtt.tls_ca / tls_cert / tls_key: the TLS files were refused", rc);
-    }
+    return std::unexpected(fmt::format("mqtt: cannot set the will: {}", mosquitto_strerror(rc)));
   }
   mosquitto_connect_v5_callback_set(
       i.client, [](mosquitto*, void* object, int rc, int /*flags*/, const mosquitto_property*) {
@@ -491,7 +472,7 @@ MqttPublisher::~MqttPublisher() {
       "failed; {} control requests, {} refused",
       c.queued, c.published, c.dropped, c.connects,
       c.connectFailures, c.controlsReceived, c.controlsRefused);
-  mosquitto_destroy(i.client);
+  i.handle.reset();
 }
 
 void MqttPublisher::publishLights(SharedBytes message) {
@@ -572,9 +553,11 @@ std::string MqttPublisher::note() const {
 
 std::string MqttPublisher::url() const {
   const MqttPublisherOptions& o = impl_->options;
-  const bool ipv6 = o.host.find(':') != std::string::npos;
-  return fmt::format("{}://{}{}{}:{}/{}/{}", o.tls ? "mqtts" : "mqtt", ipv6 ? "[" : "", o.host,
-                     ipv6 ? "]" : "", o.port, o.prefix, o.cameraId);
+  util::MqttUrl broker;
+  broker.tls = o.tls;
+  broker.host = o.host;
+  broker.port = o.port;
+  return broker.broker() + "/" + o.prefix + "/" + o.cameraId;
 }
 
 std::string MqttPublisher::topic(const std::string& kind) const { return impl_->topic(kind); }

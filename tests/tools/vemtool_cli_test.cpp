@@ -162,7 +162,8 @@ TEST_F(VemtoolCli, MissingInputFileIsAFailureAtRunTimeExitOne) {
 
 TEST_F(VemtoolCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
   for (const char* command :
-       {"", "lights", "filters", "info", "recover", "synth", "export", "import", "subscribe"}) {
+       {"", "lights", "filters", "info", "recover", "synth", "export", "import", "subscribe",
+        "cameras"}) {
     const CommandRun r = run(std::string(command) + " --help");
     EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
     const std::string page = r.out.substr(0, r.out.find_last_not_of('\n') + 1);
@@ -178,7 +179,8 @@ TEST_F(VemtoolCli, EveryHelpPageExitsZeroAndEndsWithTheExitStatusLine) {
 TEST_F(VemtoolCli, NoHelpPageShowsTheParsersInternals) {
   const std::regex typeAndValidator{R"(\b(TEXT|INT|UINT|FLOAT|BOOLEAN):)"};
   for (const char* command :
-       {"", "lights", "filters", "info", "recover", "synth", "export", "import", "subscribe"}) {
+       {"", "lights", "filters", "info", "recover", "synth", "export", "import", "subscribe",
+        "cameras"}) {
     const CommandRun r = run(std::string(command) + " --help");
     ASSERT_EQ(r.exitCode, 0) << command << ": " << r.err;
     for (const char* internal : {"->", "ENUM", "{false}", " OR {", " in [", "POSITIVE"})

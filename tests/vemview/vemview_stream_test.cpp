@@ -20,6 +20,7 @@
 #include "stream_e2e/small_camera.h"
 #include "stream_e2e/vemd_process.h"
 #include "support/command_run.h"
+#include "support/mosquitto_broker.h"
 
 namespace {
 
@@ -29,14 +30,15 @@ using vem::testing::CommandRun;
 using vem::testing::runCommand;
 
 // vemd in `dir` (a small camera, a 256 x 64 map, 64 lights) on a synthetic sky, streaming on a
-// free loopback port, with `pace` (--rate, --frames) added.
+// free loopback port, with `pace` (--rate, --frames) added and `moreToml` after its configuration.
 std::expected<std::unique_ptr<vem::e2e::VemdProcess>, std::string> spawnVemd(
-    const fs::path& dir, const std::vector<std::string>& pace) {
+    const fs::path& dir, const std::vector<std::string>& pace, const std::string& moreToml = "") {
   std::ofstream(dir / "camera.toml") << vem::e2e::smallCameraToml();
   std::ofstream(dir / "vemd.toml") << "version = 1\n[source]\ncamera = \""
                                    << (dir / "camera.toml").string()
                                    << "\"\n[processing]\nmap_width = 256\nmap_height = 64\n"
-                                      "lights = 64\n";
+                                      "lights = 64\n"
+                                   << moreToml;
   std::vector<std::string> args{"--config",       (dir / "vemd.toml").string(),
                                 "--source",       "synthetic:sky",
                                 "--stats-every",  "0",
@@ -168,3 +170,56 @@ TEST(VemviewStreamPlate, LightsThatStopArrivingLeaveTheCompositeOnTheLastLights)
 }
 
 }  // namespace
+
+// vemview through an MQTT broker (issue 22): the real vemd publishing to a real Mosquitto with the
+// shipped ACLs, vemview subscribing as the read-only viewer with its password file. Before the
+// MQTT transport, vemview refused mqtt:// addresses.
+TEST(VemviewMqtt, LightsThroughABrokerAsAReadOnlyViewerAreDrawnFrameByFrame) {
+  const fs::path dir = fs::temp_directory_path() / ("vemview_mqtt_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  vem::testing::MosquittoBrokerConfig config;
+  config.allowAnonymous = false;
+  config.users = {{"vemd", "vemd-secret-2"}, {"viewer", "viewer-secret-2"}};
+  config.acl = vem::testing::readTextFile(fs::path(VEM_SOURCE_DIR) / "config" / "mosquitto" /
+                                          "vemcast.acl");
+  auto broker = vem::testing::MosquittoBroker::start(config);
+  ASSERT_TRUE(broker.has_value()) << broker.error();
+  std::ofstream(dir / "vemd-credentials.toml")
+      << "username = \"vemd\"\npassword = \"vemd-secret-2\"\n";
+  std::ofstream(dir / "viewer.pass") << "viewer-secret-2\n";
+  for (const char* secret : {"vemd-credentials.toml", "viewer.pass"}) {
+    fs::permissions(dir / secret, fs::perms::owner_read | fs::perms::owner_write);
+  }
+  auto vemd = spawnVemd(dir, {"--rate", "30", "--mqtt", (*broker)->url("/vemcast/cam1")},
+                        "[mqtt]\ncredentials_file = \"" +
+                            (dir / "vemd-credentials.toml").string() + "\"\n");
+  ASSERT_TRUE(vemd.has_value()) << vemd.error();
+  ASSERT_TRUE((*vemd)->waitForStderr("mqtt: connected", 20s)) << (*vemd)->stderrText();
+
+  const std::string url = "mqtt://viewer@127.0.0.1:" + std::to_string((*broker)->port()) +
+                          "/vemcast/cam1";
+  const CommandRun r = runCommand(
+      vem::testing::commandLine(
+          VEMVIEW_PATH, "--connect " + url + " --password-file " + (dir / "viewer.pass").string() +
+                            " --headless --width 64 --height 48 --scene spheres --count 32 "
+                            "--shadowed 8 --cluster 0 --frames 4 --out " + (dir / "out").string()),
+      dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("stream mqtt://viewer@127.0.0.1"), std::string::npos) << r.err;
+  std::ifstream timing(dir / "out" / "timing.jsonl");
+  std::set<std::uint64_t> seqs;
+  for (std::string line; std::getline(timing, line);) {
+    seqs.insert(nlohmann::json::parse(line)["input_seq"].get<std::uint64_t>());
+  }
+  EXPECT_EQ(seqs.size(), 4U) << "each frame drawn from a new light frame through the broker";
+
+  // MQTT-only options with a WebSocket address are a usage error in one sentence.
+  const CommandRun wrong = runCommand(
+      vem::testing::commandLine(VEMVIEW_PATH,
+                                "--connect ws://127.0.0.1:1 --username viewer --headless"),
+      dir);
+  EXPECT_EQ(wrong.exitCode, 2);
+  EXPECT_NE(wrong.err.find("are for an MQTT broker"), std::string::npos) << wrong.err;
+  vemd->reset();
+  fs::remove_all(dir);
+}

@@ -18,6 +18,7 @@ void addSynthCommand(CLI::App& app, int& exitCode);    // synth_command.cpp
 void addExportCommand(CLI::App& app, int& exitCode);   // export_command.cpp
 void addImportCommand(CLI::App& app, int& exitCode);   // import_command.cpp
 void addSubscribeCommand(CLI::App& app, int& exitCode);  // subscribe_command.cpp
+void addCamerasCommand(CLI::App& app, int& exitCode);    // cameras_command.cpp
 
 // Logs `message` (one sentence) as an error and returns the failure exit status (main.cpp).
 [[nodiscard]] int fail(const std::string& message);

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   vem::tool::addExportCommand(app, exitCode);
   vem::tool::addImportCommand(app, exitCode);
   vem::tool::addSubscribeCommand(app, exitCode);
+  vem::tool::addCamerasCommand(app, exitCode);
   vem::cli::applyConventions(app, "vemtool");
   try {
     app.parse(argc, argv);

@@ -1,6 +1,8 @@
-// `vemtool subscribe ws://HOST:PORT`: receives a vemd stream (client/stream_client.h) and prints
-// each light frame as one JSON line (the `vemtool lights` light objects), each cube map as one
-// line, and the reception statistics as a final JSON line on stderr.
+// `vemtool subscribe ws://HOST:PORT` or `mqtt://[USER@]HOST[:PORT]/PREFIX/CAMERA`: receives a vemd
+// stream, straight or through an MQTT broker (client/stream_client.h), and prints each light frame
+// as one JSON line (the `vemtool lights` light objects), each cube map as one line, and the
+// reception statistics as a final JSON line on stderr. The lines come from the decoded values, so
+// they are the same for the same frames whichever the transport.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -20,6 +22,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "client/mqtt_url.h"
+#include "client/mqtt_cli_options.h"
 #include "client/stream_client.h"
 #include "commands.h"
 #include "proto/stream_protocol.h"
@@ -42,7 +46,7 @@ struct SubscribeOptions {
   std::uint64_t frames = 0;  // 0: until interrupted or the duration
   double timeoutS = 10.0;    // to connect and receive the first frame; 0: wait for ever
   double durationS = 0.0;    // 0: none
-  std::string caFile;
+  client::MqttCliOptions mqtt;       // --ca-file (wss, mqtts), and the MQTT-only options
 };
 
 std::atomic<bool> interrupted{false};
@@ -162,15 +166,38 @@ std::string noFirstFrameSentence(const SubscribeOptions& o, client::ConnectionSt
                      last);
 }
 
+// The options of the other transport are a usage error (exit 2, the conventions' error line).
+void refuseOtherTransportsOptions(const SubscribeOptions& o) {
+  if (client::isMqttUrl(o.url) && (!o.token.empty() || !o.tokenFile.empty())) {
+    throw CLI::ValidationError(
+        "--token and --token-file are for ws:// and wss:// addresses (over MQTT the broker's ACL "
+        "decides)");
+  }
+  if (!client::isMqttUrl(o.url) && client::anyMqttOnlyOption(o.mqtt)) {
+    throw CLI::ValidationError(
+        "--username, --password-file, --cert and --key are for mqtt:// and mqtts:// addresses");
+  }
+}
+
 int runSubscribe(SubscribeOptions o) {
+  refuseOtherTransportsOptions(o);
   if (!readToken(o)) return EXIT_FAILURE;
+  const auto security = client::readMqttSecurity(o.mqtt);
+  if (!security) {
+    spdlog::error("{}", security.error());
+    return EXIT_FAILURE;
+  }
   const bool lights = o.what.contains("lights");
   const bool cubemaps = o.what.contains("cubemap");
   FramePrinter printer(o.frames, cubemaps && !lights);
   client::StreamClientOptions options;
   options.url = o.url;
   options.token = o.token;
-  options.caFile = o.caFile;
+  options.caFile = security->caFile;
+  options.username = security->username;
+  options.password = security->password;
+  options.certFile = security->certFile;
+  options.keyFile = security->keyFile;
   options.subscription.lights = lights;
   options.subscription.cubemapRateHz = cubemaps ? o.cubemapRateHz : 0.0;
   options.subscription.cubemapFacePx = o.cubemapFacePx;
@@ -210,9 +237,13 @@ int runSubscribe(SubscribeOptions o) {
 void addSubscribeCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<SubscribeOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "subscribe", "Receive a vemd stream and print its frames as JSON lines (client/)");
+      "subscribe",
+      "Receive a vemd stream, straight or through an MQTT broker, and print its frames as JSON "
+      "lines (client/)");
   cmd->footer(
-      "Example:\n  vemtool subscribe ws://127.0.0.1:8490 --frames 10\n"
+      "Examples:\n  vemtool subscribe ws://127.0.0.1:8490 --frames 10\n"
+      "  vemtool subscribe mqtt://viewer@broker/vemcast/cam-1 --password-file ~/.vemcast-pw\n"
+      "  vemtool subscribe mqtts://broker/vemcast/cam-1 --ca-file ca.crt --cert me.crt --key me.key\n"
       "Prints one line per light frame:\n"
       "  {\"seq\":S,\"lights_seq\":L,\"capture_ts_ns\":T,\"latency_ms\":M,\"count\":N,"
       "\"lights\":[{\"id\":K,\"dir\":[x,y,z],\"rgb\":[r,g,b]},...]}\n"
@@ -221,10 +252,14 @@ void addSubscribeCommand(CLI::App& app, int& exitCode) {
       "Exits 0 after N frames (light frames, or cube maps with --what cubemap) or at the end of\n"
       "--duration without --frames; 1 when no frame arrived within --timeout (no daemon at the\n"
       "address: the client retries until then), when --duration ends before N frames, or when\n"
-      "the daemon refuses the client.");
-  cmd->add_option("url", options->url, "ws://HOST:PORT[/PATH] or wss://...")->required();
-  auto* token = cmd->add_option("--token", options->token, "The daemon's bearer token");
-  cmd->add_option("--token-file", options->tokenFile, "A file whose first line is the token")
+      "the daemon or the broker refuses the client. Over MQTT the camera's vemd publishes cube maps\n"
+      "at its own rate and size: --cubemap-rate, --cubemap-face and --cubemap-levels do not apply.");
+  cmd->add_option("url", options->url,
+                  "ws://HOST:PORT[/PATH], wss://..., mqtt://[USER@]HOST[:PORT]/PREFIX/CAMERA or "
+                  "mqtts://...")
+      ->required();
+  auto* token = cmd->add_option("--token", options->token, "ws: the daemon's bearer token");
+  cmd->add_option("--token-file", options->tokenFile, "ws: a file whose first line is the token")
       ->type_name("FILE")
       ->check(help::quiet(CLI::ExistingFile))
       ->excludes(token);
@@ -252,9 +287,8 @@ void addSubscribeCommand(CLI::App& app, int& exitCode) {
                   "Stop after S seconds (exit 1 when --frames were not all received)")
       ->option_text("SECONDS")
       ->check(help::quiet(CLI::PositiveNumber));
-  cmd->add_option("--ca-file", options->caFile, "wss: trust the CA certificates of this PEM file")
-      ->type_name("FILE")
-      ->check(help::quiet(CLI::ExistingFile));
+  client::addMqttCliOptions(*cmd, options->mqtt,
+                    "wss, mqtts: trust the CA certificates of this PEM file instead of the system's");
   cmd->callback([options, &exitCode] { exitCode = runSubscribe(*options); });
 }
 
