@@ -52,6 +52,8 @@ struct TestMqttPublisher::Callbacks {
                       const mosquitto_property* properties) {
     TestMqttPublisher& p = self(userdata);
     ReceivedControl control;
+    control.topic = m->topic;
+    control.payload.assign(static_cast<const char*>(m->payload), std::size_t(m->payloadlen));
     control.message.ParseFromArray(m->payload, m->payloadlen);
     char* responseTopic = nullptr;
     if (mosquitto_property_read_string(properties, MQTT_PROP_RESPONSE_TOPIC, &responseTopic,
@@ -132,10 +134,21 @@ TestMqttPublisher::~TestMqttPublisher() {
   mosquitto_destroy(client_);
 }
 
-bool TestMqttPublisher::publish(const std::string& topic, const std::string& payload, bool retain) {
+bool TestMqttPublisher::publish(const std::string& topic, const std::string& payload, bool retain,
+                                const std::string& responseTopic,
+                                const std::string& correlationData) {
+  mosquitto_property* properties = nullptr;
+  if (!responseTopic.empty()) {
+    mosquitto_property_add_string(&properties, MQTT_PROP_RESPONSE_TOPIC, responseTopic.c_str());
+  }
+  if (!correlationData.empty()) {
+    mosquitto_property_add_binary(&properties, MQTT_PROP_CORRELATION_DATA, correlationData.data(),
+                                  std::uint16_t(correlationData.size()));
+  }
   int mid = 0;
   const int rc = mosquitto_publish_v5(client_, &mid, topic.c_str(), int(payload.size()),
-                                      payload.data(), 1, retain, nullptr);
+                                      payload.data(), 1, retain, properties);
+  mosquitto_property_free_all(&properties);
   if (rc != MOSQ_ERR_SUCCESS) {
     ADD_FAILURE() << "cannot publish to " << topic << ": " << mosquitto_strerror(rc);
     return false;

@@ -34,14 +34,19 @@ class TestMqttPublisher {
   TestMqttPublisher(const TestMqttPublisher&) = delete;
   TestMqttPublisher& operator=(const TestMqttPublisher&) = delete;
 
-  // Publishes and waits for the broker's PUBACK; false (and a test failure) otherwise.
-  bool publish(const std::string& topic, const std::string& payload, bool retain = false);
+  // Publishes and waits for the broker's PUBACK; false (and a test failure) otherwise. A request
+  // names its `responseTopic` and `correlationData` (MQTT 5 properties) when they are not empty.
+  bool publish(const std::string& topic, const std::string& payload, bool retain = false,
+               const std::string& responseTopic = "", const std::string& correlationData = "");
 
   // Subscribes to `controlTopic` (waits for the SUBACK) and answers each control from then on.
   bool answerControls(const std::string& controlTopic);
 
+  // What arrived on a subscribed topic (a control, or a reply to this client's request).
   struct ReceivedControl {
-    stream::ClientMessage message;
+    std::string topic;
+    std::string payload;            // the bytes as received
+    stream::ClientMessage message;  // the payload parsed as a control (when it is one)
     std::string responseTopic;
     std::string correlationData;
   };
