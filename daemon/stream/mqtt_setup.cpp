@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "proto/stream_protocol.h"
+#include "proto/stream_protocol.h"  // usableCubeLevels
 #include "stream/stream_setup.h"
 #include "util/mqtt_url.h"
 #include "util/owner_only_file.h"
@@ -84,10 +84,7 @@ std::expected<MqttPublisherOptions, std::string> mqttPublisherOptions(
   options.cubemapRateHz = settings.cubemapRateHz;
   options.cube.facePx = int(settings.cubemapFacePx);
   options.cube.levels = usableCubeLevels(options.cube.facePx, int(settings.cubemapLevels));
-  options.hello.set_server("vemd " VEM_VERSION);
-  options.hello.set_source(source.spec);
-  options.hello.set_calibration_id(calibrationId(source));
-  options.hello.set_max_lights(kMaxLights);
+  options.hello = helloFor(source);
   return options;
 }
 

@@ -76,11 +76,17 @@ std::expected<StreamServerOptions, std::string> serverOptions(const StreamSettin
   options.maxClientLag = std::chrono::milliseconds(config.maxClientLagMs);
   options.sendBufferBytes = int(config.sendBufferBytes);
   options.cubemapBudget = {int(config.cubemapMaxFacePx), config.cubemapMaxRateHz};
-  options.hello.set_server("vemd " VEM_VERSION);
-  options.hello.set_source(source.spec);
-  options.hello.set_calibration_id(calibrationId(source));
-  options.hello.set_max_lights(kMaxLights);
+  options.hello = helloFor(source);
   return options;
+}
+
+Hello helloFor(const SourceDescription& source) {
+  Hello hello;
+  hello.set_server("vemd " VEM_VERSION);
+  hello.set_source(source.spec);
+  hello.set_calibration_id(calibrationId(source));
+  hello.set_max_lights(kMaxLights);
+  return hello;
 }
 
 }  // namespace vem::stream

@@ -29,6 +29,10 @@ namespace vem::stream {
 // "MODEL SERIAL #hash" of the source's camera file (FNV-1a 64 of its text), "none" without one.
 [[nodiscard]] std::string calibrationId(const SourceDescription& source);
 
+// What vemd says of itself on every connection (and on MQTT's retained hello): its version, the
+// source, the calibration, the largest light count; the rest is the connection's.
+[[nodiscard]] Hello helloFor(const SourceDescription& source);
+
 [[nodiscard]] std::expected<StreamServerOptions, std::string> serverOptions(
     const StreamSettings& config, const SourceDescription& source);
 

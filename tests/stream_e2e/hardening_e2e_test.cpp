@@ -28,22 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kToken = "e2e-token-0123456789abcdef";  // long enough for vemd's rule
 
-// The seqs of the intact frames of the recording at `path`, in file order.
-std::vector<std::uint64_t> recordedSeqs(const fs::path& path) {
-  std::vector<std::uint64_t> seqs;
-  auto reader = recording::RecordingReader::open(path);
-  if (!reader) {
-    ADD_FAILURE() << "cannot open " << path;
-    return seqs;
-  }
-  for (;;) {
-    auto frame = reader->next();
-    if (!frame || !*frame) break;
-    seqs.push_back((*frame)->seq);
-  }
-  return seqs;
-}
-
 // The number after `key` in vemd's final statistics line ("final ...: N in, N processed ...").
 std::uint64_t finalCount(const std::string& stderrText, const std::string& key) {
   const std::size_t line = stderrText.rfind("final ");

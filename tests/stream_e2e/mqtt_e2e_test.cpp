@@ -201,7 +201,9 @@ TEST_F(MqttE2eTest, BrokerKilledMidStreamNeitherStopsNorSlowsVemdAndEveryoneResu
   auto broker = startBroker();
   ASSERT_NE(broker, nullptr);
   const fs::path jsonl = dir_ / "lights.jsonl";
-  const auto port = startPublishingVemd(broker->url(), "", {"--jsonl", jsonl.string()});
+  const fs::path recording = dir_ / "run.vem";
+  const auto port = startPublishingVemd(broker->url(), "",
+                                        {"--jsonl", jsonl.string(), "--record", recording.string()});
   ASSERT_TRUE(port);
   LoggedClient ws = startClient(*port);
   LoggedClient mqtt = startMqttClient(broker->url(cameraPath()));
@@ -218,9 +220,6 @@ TEST_F(MqttE2eTest, BrokerKilledMidStreamNeitherStopsNorSlowsVemdAndEveryoneResu
   std::vector<LoggedClient> wsOnly;
   wsOnly.push_back(std::move(ws));
   ASSERT_TRUE(waitForSeq(wsOnly, wsAtKill->frame.seq + outage)) << "vemd stalled without a broker";
-  EXPECT_LE(missingSeqs(wsOnly[0].log->framesBetween(wsAtKill->frame.seq,
-                                                     wsAtKill->frame.seq + outage)),
-            mostMissing(outage));
 
   ASSERT_TRUE(broker->restart().has_value());
   const auto after = mqtt.client->waitForLightFrame(wsAtKill->frame.seq + outage, kFrameTimeout);
@@ -241,6 +240,15 @@ TEST_F(MqttE2eTest, BrokerKilledMidStreamNeitherStopsNorSlowsVemdAndEveryoneResu
   EXPECT_GE(jsonLines, outage) << "the JSON-lines sink stopped with the broker";
   wsOnly.clear();
   expectCleanExit(SIGTERM);
+  // The recorder went on too: the frames of the outage are in the recording (all of them but
+  // what two loaded cores may make the capture queue drop; a processing thread held up by the
+  // broker would miss nearly all).
+  const std::vector<std::uint64_t> recorded = recordedSeqs(recording);
+  std::uint64_t notRecorded = 0;
+  for (std::uint64_t seq = wsAtKill->frame.seq; seq <= wsAtKill->frame.seq + outage; ++seq) {
+    if (!std::ranges::binary_search(recorded, seq)) ++notRecorded;
+  }
+  EXPECT_LE(notRecorded, mostMissing(outage));
 }
 
 TEST_F(MqttE2eTest, BridgedSecondBrokerDeliversTheCameraToItsSubscribers) {
@@ -361,6 +369,30 @@ TEST_F(MqttE2eTest, TlsBrokerIsReachedByATrustingClientAndRefusedByOneWithoutThe
   EXPECT_FALSE(doubting.client->waitForLightFrame(std::nullopt, 3s));
   EXPECT_NE(doubting.client->state(), client::ConnectionState::Connected);
   EXPECT_FALSE(doubting.client->stateReason().empty());
+  expectCleanExit(SIGTERM);
+}
+
+TEST_F(MqttE2eTest, BrokerThatRequiresClientCertificatesTakesVemdsAndItsFramesFlow) {
+  MosquittoBrokerConfig config;
+  config.tls = true;
+  config.requireClientCertificate = true;
+  auto broker = startBroker(config);
+  ASSERT_NE(broker, nullptr);
+  const auto vemdCertificate = broker->issueClientCertificate("vemd");
+  ASSERT_TRUE(vemdCertificate) << vemdCertificate.error();
+  const auto viewerCertificate = broker->issueClientCertificate("viewer");
+  ASSERT_TRUE(viewerCertificate) << viewerCertificate.error();
+  ASSERT_TRUE(startPublishingVemd(broker->tlsUrl(),
+                                  "tls_ca = \"" + broker->caFile().string() + "\"\ntls_cert = \"" +
+                                      vemdCertificate->cert.string() + "\"\ntls_key = \"" +
+                                      vemdCertificate->key.string() + "\"\n"));
+  LoggedClient viewer = startMqttClient(broker->tlsUrl(cameraPath()), [&](auto& o) {
+    o.caFile = broker->caFile().string();
+    o.certFile = viewerCertificate->cert.string();
+    o.keyFile = viewerCertificate->key.string();
+  });
+  ASSERT_TRUE(viewer.client->waitForLightFrame(std::nullopt, kFrameTimeout))
+      << viewer.client->stateReason() << "\n" << vemd_->stderrText();
   expectCleanExit(SIGTERM);
 }
 

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <thread>
 
+#include "recording/recording_reader.h"
 #include "stream_e2e/small_camera.h"
 
 namespace vem::e2e {
@@ -85,6 +86,22 @@ void StreamE2eTest::expectCleanExit(int signal) {
   ASSERT_TRUE(status.has_value()) << "vemd did not exit in time";
   EXPECT_EQ(*status, 0) << "vemd's exit status";
   EXPECT_EQ(sanitizerReports(vemd_->stderrText()), "");
+}
+
+// The seqs of the intact frames of the recording at `path`, in file order.
+std::vector<std::uint64_t> recordedSeqs(const fs::path& path) {
+  std::vector<std::uint64_t> seqs;
+  auto reader = recording::RecordingReader::open(path);
+  if (!reader) {
+    ADD_FAILURE() << "cannot open " << path;
+    return seqs;
+  }
+  for (;;) {
+    auto frame = reader->next();
+    if (!frame || !*frame) break;
+    seqs.push_back((*frame)->seq);
+  }
+  return seqs;
 }
 
 std::uint64_t mostMissing(std::uint64_t seqs) {

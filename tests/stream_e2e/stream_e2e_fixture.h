@@ -77,6 +77,8 @@ class StreamE2eTest : public ::testing::Test {
   std::unique_ptr<VemdProcess> vemd_;
 };
 
+// The seqs of the intact frames of the recording at `path`, in file order.
+[[nodiscard]] std::vector<std::uint64_t> recordedSeqs(const std::filesystem::path& path);
 // The seqs a client may miss out of `seqs` (kMostMissingShare of them, at least 1).
 [[nodiscard]] std::uint64_t mostMissing(std::uint64_t seqs);
 // Waits (bounded by kFrameTimeout) until every log holds a frame with seq >= `seq`.
