@@ -8,6 +8,8 @@
 #   <sysconf>/vemcast/                    vemd.toml, camera-example.toml, plate-camera-example.toml (config/)
 #   <unitdir>/vemd.service                the systemd unit, its ExecStart naming the installed vemd
 #   <prefix>/share/doc/vemcast/           README.md, docs/*.md and their images
+#   <prefix>/share/doc/vemcast/examples/  mosquitto/ (an MQTT broker with vemcast's ACLs, config/mosquitto/)
+#                                         and systemd/vemd-mqtt-broker.conf (vemd beside a local broker)
 #
 # <sysconf> and <unitdir> depend on the prefix, which is known only when installing
 # (`cmake --install build --prefix DIR`, or cpack's /usr), so cmake/VemInstallSystemFiles.cmake
@@ -43,3 +45,12 @@ install(SCRIPT ${CMAKE_CURRENT_LIST_DIR}/VemInstallSystemFiles.cmake)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs
         FILES_MATCHING PATTERN "*.md" PATTERN "*.png" PATTERN "*.svg")
+
+# Examples (Debian's place for them): an MQTT broker's configuration and ACLs, and the systemd
+# drop-in that runs vemd beside a local broker (docs/protocol.md, "MQTT"; systemd/README.md).
+install(FILES ${PROJECT_SOURCE_DIR}/config/mosquitto/vemcast.conf
+              ${PROJECT_SOURCE_DIR}/config/mosquitto/vemcast.acl
+              ${PROJECT_SOURCE_DIR}/config/mosquitto/README.md
+        DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples/mosquitto)
+install(FILES ${PROJECT_SOURCE_DIR}/systemd/vemd-mqtt-broker.conf
+        DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples/systemd)

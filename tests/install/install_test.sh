@@ -37,7 +37,9 @@ for config in $configs; do
     fail "$prefix/etc/vemcast/$config: expected a copy of config/$config"
 done
 
-for doc in README.md docs/vemd.md docs/architecture.md docs/images/main-job-render.png; do
+for doc in README.md docs/vemd.md docs/architecture.md docs/images/main-job-render.png \
+           examples/mosquitto/vemcast.conf examples/mosquitto/vemcast.acl \
+           examples/systemd/vemd-mqtt-broker.conf; do
   [ -f "$prefix/share/doc/vemcast/$doc" ] || fail "$prefix/share/doc/vemcast/$doc: expected the installed documentation, found none"
 done
 
