@@ -8,8 +8,10 @@
 namespace vem::client {
 
 void addMqttCliOptions(CLI::App& command, MqttCliOptions& o, const std::string& caFileHelp) {
-  command.add_option("--username", o.username,
-                     "mqtt: the broker's user name (or USER@ in the address)");
+  command
+      .add_option("--username", o.username,
+                  "mqtt: the broker's user name (or USER@ in the address)")
+      ->type_name("USER");
   command
       .add_option("--password-file", o.passwordFile,
                   "mqtt: a file readable by its owner only whose first line is the password")
