@@ -23,6 +23,7 @@
 
 #include "proto/stream_protocol.h"
 #include "stream/client_message_handler.h"
+#include "stream/cubemap_pacing.h"
 #include "stream/frame_encoding.h"
 #include "stream/thread_niceness.h"
 #include "util/backoff.h"
@@ -76,7 +77,7 @@ class MqttPublisher::Impl {
 
   // ---- the processing thread's side
   util::DropOldestQueue<Outgoing> queue;
-  std::int64_t nextCubemapDueNs = 0;  // under `mutex`
+  CubemapPacing cubemapPacing;  // under `mutex`
 
   // ---- shared, under `mutex`
   mutable std::mutex mutex;
@@ -487,8 +488,7 @@ void MqttPublisher::publishEnvironment(const CubeVariant& variant, SharedBytes m
                                .count();
   {
     std::lock_guard lock(i.mutex);
-    if (now < i.nextCubemapDueNs) return;  // built for a faster WebSocket client
-    i.nextCubemapDueNs = now + std::int64_t(1e9 / i.options.cubemapRateHz);
+    if (!i.cubemapPacing.admit(now, i.options.cubemapRateHz)) return;
   }
   i.enqueue({i.topic("cubemap"), std::move(message), 0, false, {}});
 }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "stream/client_message_handler.h"
+#include "stream/cubemap_pacing.h"
 #include "stream/outbox.h"
 #include "stream/stream_server.h"
 #include "stream/subscription.h"
@@ -56,7 +57,7 @@ class Connection {
 
   Outbox outbox;
   Subscription subscription;
-  std::chrono::steady_clock::time_point lastEnvironment{};
+  CubemapPacing environmentPacing;
   bool open = false;  // the WebSocket handshake completed
 
  private:

@@ -538,16 +538,15 @@ class StreamServer::Impl final : public SessionHost, public UpgradeHost {
       messages = std::exchange(environments_, {});
       environmentPosted_ = false;
     }
-    const auto now = std::chrono::steady_clock::now();
+    const std::int64_t nowNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                   std::chrono::steady_clock::now().time_since_epoch())
+                                   .count();
     for (auto& [id, connection] : connections_) {
       const Subscription& s = connection->subscription;
       if (!connection->open || !s.wantsCubemaps()) continue;
       auto it = messages.find(s.cube);
       if (it == messages.end()) continue;
-      // 10 % early is fine: the worker builds at the fastest subscriber's pace.
-      const auto period = std::chrono::duration<double>(0.9 / s.cubemapRateHz);
-      if (now - connection->lastEnvironment < period) continue;
-      connection->lastEnvironment = now;
+      if (!connection->environmentPacing.admit(nowNs, s.cubemapRateHz)) continue;
       connection->outbox.putEnvironment(it->second);
       connection->wake();
     }

@@ -57,6 +57,10 @@ std::expected<void, std::string> setUpTls(mosquitto* client, const MqttSecurity&
 std::expected<void, std::string> setUp(mosquitto* client, const MqttUrl& url,
                                        const MqttSecurity& s) {
   mosquitto_int_option(client, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V5);
+  // Nagle's algorithm off: a light frame written while the previous one waits for its ACK would
+  // otherwise wait for the broker's delayed ACK (p99 13 ms instead of 3 on loopback,
+  // docs/BENCHMARKS.md, "MQTT fan-out").
+  mosquitto_int_option(client, MOSQ_OPT_TCP_NODELAY, 1);
   if (!s.username.empty() && !url.username.empty() && s.username != url.username) {
     return std::unexpected(fmt::format("the user name is given twice: '{}' in the address and '{}'",
                                        url.username, s.username));

@@ -1,6 +1,6 @@
 // A libmosquitto client set up for a vemcast MQTT address (util/mqtt_url.h), as vemd's publisher
 // (stream/mqtt_publisher.h), the clients' stream transport (client/mqtt_transport.h) and the camera
-// list (client/camera_list.h) need it: MQTT 5, the client id given or "vemcast-" and 12 random hex
+// list (client/camera_list.h) need it: MQTT 5, TCP_NODELAY, the client id given or "vemcast-" and 12 random hex
 // digits, the user name (the options' or else the
 // address's) and password, and for mqtts:// TLS with the broker verified against caFile or the
 // system's CAs (OpenSSL's default directory, or $SSL_CERT_DIR) and its host name, a client
