@@ -19,17 +19,11 @@
 
 #include "bench/cameras/camera_latency.h"
 #include "bench/markdown_output.h"
+#include "bench/measurements.h"
 
 namespace {
 
-double quantile(std::vector<double> v, double q) {
-  if (v.empty()) return 0.0;
-  std::ranges::sort(v);
-  const double at = q * double(v.size() - 1);
-  const auto lo = std::size_t(at);
-  const std::size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (at - double(lo)) * (v[hi] - v[lo]);
-}
+using vem::bench::quantile;
 
 std::string report(const std::vector<vem::bench::LatencyRun>& runs, int frames) {
   std::string md = fmt::format(

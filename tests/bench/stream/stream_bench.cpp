@@ -8,14 +8,13 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <memory>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 #include <fmt/format.h>
 
+#include "bench/measurements.h"
 #include "client/stream_client.h"
 #include "recording/recording_reader.h"
 #include "stream_e2e/raw_ws_client.h"
@@ -118,31 +117,7 @@ std::expected<MessageSize, std::string> lightFrameSize(const std::string& vemdPa
                                 clustering ? "clustered (Q = 72)" : "no clustering"));
 }
 
-// vemd's CPU time so far (user + system, all threads) in ms, from /proc/PID/stat; 0 if unreadable.
-double cpuTimeMs(pid_t pid) {
-  std::ifstream in(fmt::format("/proc/{}/stat", pid));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t afterName = text.rfind(')');
-  if (afterName == std::string::npos) return 0.0;
-  std::istringstream fields(text.substr(afterName + 2));
-  std::string field;
-  double ticks = 0.0;
-  for (int i = 3; i <= 15 && fields >> field; ++i) {  // fields 14 and 15: utime, stime
-    if (i >= 14) ticks += std::stod(field);
-  }
-  return ticks * 1000.0 / double(::sysconf(_SC_CLK_TCK));
-}
-
 }  // namespace
-
-double quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  std::ranges::sort(values);
-  const double at = q * double(values.size() - 1);
-  const auto lo = std::size_t(at);
-  const std::size_t hi = std::min(lo + 1, values.size() - 1);
-  return values[lo] + (at - double(lo)) * (values[hi] - values[lo]);
-}
 
 std::expected<LatencyResult, std::string> networkLatency(const std::string& vemdPath,
                                                          std::size_t frames, double rateHz) {
@@ -247,7 +222,7 @@ std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPa
   std::this_thread::sleep_for(2s);  // the Status window then covers every client
   const auto startStatus = (*streamClient)->status();
   const client::ClientStats startStats = (*streamClient)->stats();
-  const double startCpuMs = cpuTimeMs((*vemd)->process->pid());
+  const double startCpuMs = processCpuMs((*vemd)->process->pid());
   std::vector<double> rates;
   const auto windowStart = std::chrono::steady_clock::now();
   const auto windowEnd = windowStart + std::chrono::duration<double>(windowS);
@@ -264,7 +239,7 @@ std::expected<RateResult, std::string> rateWithClients(const std::string& vemdPa
       std::chrono::duration<double>(std::chrono::steady_clock::now() - windowStart).count();
   const client::ClientStats endStats = (*streamClient)->stats();
   const auto endStatus = (*streamClient)->status();
-  const double cpuMs = cpuTimeMs((*vemd)->process->pid()) - startCpuMs;
+  const double cpuMs = processCpuMs((*vemd)->process->pid()) - startCpuMs;
   const std::size_t allConnected = connected.load() + 1;
   (*streamClient)->stop();
   joinDrains();
@@ -350,7 +325,7 @@ std::expected<CubemapLoadResult, std::string> rateWithCubemapLoad(const std::str
     }
     std::this_thread::sleep_for(2s);
     const auto startStatus = (*streamClient)->status();
-    const double startCpuMs = cpuTimeMs((*vemd)->process->pid());
+    const double startCpuMs = processCpuMs((*vemd)->process->pid());
     counting = true;
     const auto windowStart = std::chrono::steady_clock::now();
     std::this_thread::sleep_for(std::chrono::duration<double>(windowS));
@@ -358,7 +333,7 @@ std::expected<CubemapLoadResult, std::string> rateWithCubemapLoad(const std::str
     const double elapsedS =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - windowStart).count();
     const auto endStatus = (*streamClient)->status();
-    const double cpuMs = cpuTimeMs((*vemd)->process->pid()) - startCpuMs;
+    const double cpuMs = processCpuMs((*vemd)->process->pid()) - startCpuMs;
     (*streamClient)->stop();
     joinDrains();
     if (subscribed.load() < load.clients) {

@@ -82,7 +82,4 @@ struct CubemapLoadResult {
 [[nodiscard]] std::expected<CubemapLoadResult, std::string> rateWithCubemapLoad(
     const std::string& vemdPath, double rateHz, const CubemapLoad& load, double windowS);
 
-// The q-quantile (0..1) of `values`, linearly interpolated; 0 when empty.
-[[nodiscard]] double quantile(std::vector<double> values, double q);
-
 }  // namespace vem::bench
